@@ -1,0 +1,42 @@
+// orthoray: decide whether a ray among axis-aligned mirrors reaches a point.
+#include "commands.hpp"
+#include "orthoray/parse.hpp"
+
+#include <iostream>
+#include <new>
+
+int main(int argc, char** argv) {
+    using namespace orthoray::cli;
+    CLI::App app{"orthoray: decides exactly whether a light ray among axis-aligned mirrors\n"
+                 "reaches a target point, and proves the answer with a certificate.\n\n"
+                 "Example:\n"
+                 "  orthoray solve instances/2d/box-corner-3x5.scene --certificate path.cert\n"
+                 "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n\n"
+                 "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
+                 "3 a resource limit was reached before an answer.\n"
+                 "Scene format and rules: docs/scene-format.md, docs/semantics.md."};
+    app.name("orthoray");
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "orthoray 0.1.0");
+    Command solve = add_solve(app);
+    Command verify = add_verify(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e); // --help, --version
+        std::cerr << "orthoray: " << e.what() << " (see 'orthoray --help')\n";
+        return bad_input;
+    }
+    try {
+        return app.got_subcommand("solve") ? solve() : verify();
+    } catch (const orthoray::InputError& e) {
+        std::cerr << e.what() << '\n';
+        return bad_input;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "orthoray: out of memory\n";
+        return limit;
+    } catch (const std::exception& e) {
+        std::cerr << "orthoray: internal error: " << e.what() << " (please report this)\n";
+        return internal_error;
+    }
+}

@@ -1,0 +1,130 @@
+// orthoray solve FILE: decide an instance and print the answer.
+#include "commands.hpp"
+#include "orthoray/certificate.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/solve.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace orthoray::cli {
+namespace {
+
+struct SolveArgs {
+    std::string file, certificate;
+    bool json = false;
+    std::uint64_t max_steps = 0;
+    Engine engine = Engine::lattice;
+    CycleDetector detector = CycleDetector::first_state;
+    Arithmetic arithmetic = Arithmetic::automatic;
+};
+
+// One JSON object. `reflections` and `period` are written as JSON integers
+// from their decimal text, so they are exact however large.
+void print_json(const Answer& a, double seconds) {
+    std::string reflections = a.reflections.get_str();
+    std::cout << "{\"answer\":" << nlohmann::json(answer_word(a)).dump()
+              << ",\"reason\":" << nlohmann::json(to_string(a.reason)).dump();
+    if (a.reason == Reason::limit) std::cout << ",\"limit\":\"steps\"";
+    std::cout << ",\"reflections\":" << reflections;
+    if (a.reason == Reason::cycle) std::cout << ",\"period\":" << reflections;
+    std::cout << ",\"engine\":" << nlohmann::json(a.engine).dump()
+              << ",\"arithmetic\":" << nlohmann::json(a.arithmetic).dump()
+              << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
+}
+
+void print_text(const Answer& a, double seconds) {
+    std::printf("answer       %s\n", answer_word(a));
+    std::printf("reason       %s%s\n", to_string(a.reason),
+                a.reason == Reason::limit ? " (--max-steps reached)" : "");
+    std::printf("%-12s %s\n", a.reason == Reason::cycle ? "period" : "reflections",
+                a.reflections.get_str().c_str());
+    std::printf("engine       %s (%s)\n", a.engine.c_str(), a.arithmetic.c_str());
+    std::printf("time         %.3f ms\n", seconds * 1e3);
+}
+
+int run(const SolveArgs& args, const CLI::Option* max_steps) {
+    const Scene scene = load_scene(args.file); // bad input ends here, before any output
+    SolveOptions options;
+    options.engine = args.engine;
+    options.cycle_detector = args.detector;
+    options.arithmetic = args.arithmetic;
+    if (max_steps->count() > 0) options.max_steps = args.max_steps;
+
+    std::ofstream cert_file;
+    std::unique_ptr<CertificateWriter> writer;
+    if (!args.certificate.empty()) {
+        cert_file.open(args.certificate, std::ios::binary | std::ios::trunc);
+        if (!cert_file)
+            throw CLI::ValidationError("--certificate", "cannot write '" + args.certificate + "'");
+        writer = std::make_unique<CertificateWriter>(cert_file, scene);
+        options.path = writer.get();
+    }
+    auto begin = std::chrono::steady_clock::now();
+    const Answer answer = solve(scene, options);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (writer) writer->finish(answer);
+
+    if (args.json)
+        print_json(answer, seconds);
+    else
+        print_text(answer, seconds);
+    if (!answer.decided()) return limit;
+    return answer.yes() ? yes : no;
+}
+
+} // namespace
+
+Command add_solve(CLI::App& app) {
+    auto args = std::make_shared<SolveArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "solve", "Decide whether the ray reaches the target.\n\n"
+                 "Example:\n"
+                 "  orthoray solve instances/2d/box-corner-3x5.scene --json\n"
+                 "  {\"answer\":\"yes\",\"reason\":\"hit\",\"reflections\":6,...}\n\n"
+                 "answer yes: the ray reaches the target (reason hit) after `reflections`\n"
+                 "reflections; answer no: it escapes to infinity, is absorbed, or is periodic\n"
+                 "(reason cycle; `period` reflections per period) without passing the target.\n"
+                 "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 --max-steps reached.");
+    cmd->add_option("FILE", args->file, "the .scene file (format: docs/scene-format.md)")
+        ->required();
+    cmd->add_flag("--json", args->json,
+                  "print one JSON object: answer, reason, reflections, period (cycles), "
+                  "engine, arithmetic, seconds");
+    cmd->add_option("--certificate", args->certificate,
+                    "stream the certificate (docs/certificates.md) to this file; check it with "
+                    "'orthoray verify'");
+    CLI::Option* max_steps =
+        cmd->add_option("--max-steps", args->max_steps,
+                        "perform at most N reflections; without an answer by then, answer unknown "
+                        "(reason limit) and exit 3");
+    const std::map<std::string, Engine> engines{
+        {"lattice", Engine::lattice}, {"reference", Engine::reference}, {"graph", Engine::graph}};
+    cmd->add_option("--engine", args->engine,
+                    "lattice (default: integer lattice states, exact uniform grid), reference "
+                    "(naive rational O(n) scan per reflection, the test oracle), graph (explicit "
+                    "state graph; small scenes only)")
+        ->transform(CLI::CheckedTransformer(engines, CLI::ignore_case));
+    const std::map<std::string, CycleDetector> detectors{
+        {"first-state", CycleDetector::first_state}, {"brent", CycleDetector::brent}};
+    cmd->add_option("--cycle-detector", args->detector,
+                    "first-state (default: compare with the state after reflection 1) or brent "
+                    "(Brent's algorithm; needs no injectivity); both O(1) memory")
+        ->transform(CLI::CheckedTransformer(detectors, CLI::ignore_case));
+    const std::map<std::string, Arithmetic> arithmetics{{"auto", Arithmetic::automatic},
+                                                        {"wide", Arithmetic::wide}};
+    cmd->add_option("--arithmetic", args->arithmetic,
+                    "auto (default: 64-bit integers when a bound proves them safe, else GMP) or "
+                    "wide (always GMP)")
+        ->transform(CLI::CheckedTransformer(arithmetics, CLI::ignore_case));
+    return [args, max_steps] { return run(*args, max_steps); };
+}
+
+} // namespace orthoray::cli

@@ -1,0 +1,43 @@
+// orthoray verify FILE CERT: check a certificate independently of the solvers.
+#include "commands.hpp"
+#include "orthoray/certificate.hpp"
+#include "orthoray/parse.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+namespace orthoray::cli {
+namespace {
+
+struct VerifyArgs {
+    std::string file, certificate;
+};
+
+int run(const VerifyArgs& args) {
+    const Scene scene = load_scene(args.file);
+    std::ifstream cert(args.certificate, std::ios::binary);
+    if (!cert) read_file(args.certificate); // throws the usual FILE:1:1 message
+    const Verdict verdict = verify_certificate(scene, cert, args.certificate);
+    std::cout << verdict.message << '\n';
+    return verdict.valid ? yes : no;
+}
+
+} // namespace
+
+Command add_verify(CLI::App& app) {
+    auto args = std::make_shared<VerifyArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "verify", "Check a certificate written by 'orthoray solve --certificate'.\n\n"
+                  "The check is plain rational geometry that shares no code with the solvers.\n"
+                  "Example:\n"
+                  "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
+                  "  valid: hit, 6 reflections\n\n"
+                  "Exit status: 0 valid, 1 invalid (the first failing step is printed),\n"
+                  "2 unreadable or malformed scene or certificate.");
+    cmd->add_option("FILE", args->file, "the .scene file")->required();
+    cmd->add_option("CERT", args->certificate, "the certificate file")->required();
+    return [args] { return run(*args); };
+}
+
+} // namespace orthoray::cli

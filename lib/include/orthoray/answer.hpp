@@ -1,0 +1,32 @@
+// What a solver says about an instance.
+#pragma once
+
+#include "orthoray/number.hpp"
+
+#include <string>
+
+namespace orthoray {
+
+// hit: the ray reaches the target (answer yes). escape, absorbed, cycle: it
+// never does (answer no). limit: a resource limit stopped the run first.
+enum class Reason { hit, escape, absorbed, cycle, limit };
+
+struct Answer {
+    Reason reason = Reason::limit;
+    // hit: reflections strictly before the ray first reaches the target;
+    // escape/absorbed: reflections before it leaves or stops; cycle: the
+    // period (reflections in one period); limit: reflections performed.
+    Integer reflections;
+    std::string engine;     // which engine decided it ("lattice", "reference", "graph")
+    std::string arithmetic; // integers the lattice engine used ("int64", "gmp"), or "rational"
+
+    bool yes() const { return reason == Reason::hit; }
+    bool decided() const { return reason != Reason::limit; }
+};
+
+// "hit", "escape", "absorbed", "cycle", "limit".
+const char* to_string(Reason reason);
+// "yes", "no", "unknown".
+const char* answer_word(const Answer& answer);
+
+} // namespace orthoray

@@ -1,0 +1,41 @@
+// Certificates: the evidence behind an answer, and their independent check.
+// The file format is in docs/certificates.md.
+#pragma once
+
+#include "orthoray/answer.hpp"
+#include "orthoray/scene.hpp"
+#include "orthoray/solve.hpp"
+
+#include <istream>
+#include <ostream>
+#include <string>
+
+namespace orthoray {
+
+// Streams a certificate while a solver runs: attach it as SolveOptions::path,
+// then call finish() with the answer. Memory stays O(1) in the path length.
+class CertificateWriter : public PathSink {
+public:
+    CertificateWriter(std::ostream& out, const Scene& scene);
+    void visit(const Vector& point, const Vector& direction) override;
+    void finish(const Answer& answer);
+
+private:
+    std::ostream& out_;
+    const Scene& scene_;
+    std::uint64_t visits_ = 0;
+    Vector first_reflection_point_, first_reflection_direction_;
+    Vector last_direction_;
+};
+
+struct Verdict {
+    bool valid = false;
+    std::string message; // "valid: ..." or the first failing step
+};
+
+// Checks a certificate against the scene with plain rational geometry that
+// shares no code with the solvers. A malformed certificate throws InputError.
+Verdict verify_certificate(const Scene& scene, std::istream& certificate,
+                           const std::string& certificate_name = "<certificate>");
+
+} // namespace orthoray

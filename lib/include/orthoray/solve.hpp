@@ -1,0 +1,51 @@
+// Deciding an instance: the entry point of the library.
+#pragma once
+
+#include "orthoray/answer.hpp"
+#include "orthoray/scene.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace orthoray {
+
+enum class Engine {
+    lattice,   // default: integer lattice states and an exact uniform grid
+    reference, // naive O(n)-per-reflection scan in rationals: the test oracle
+    graph,     // explicit state graph of every lattice state (small scenes only)
+};
+
+// How the engines notice that the trajectory is periodic. Both use O(1) memory.
+enum class CycleDetector {
+    first_state, // compare with the state after reflection 1 (needs an injective step map)
+    brent,       // Brent's power-of-two checkpoints (works for any deterministic map)
+};
+
+enum class Arithmetic {
+    automatic, // machine integers when a bound proves they cannot overflow, else GMP
+    wide,      // always GMP
+};
+
+// Receives the trajectory as it is computed: first the start point, then
+// every reflection point, then (for absorbed) the absorption point, each with
+// the direction the ray leaves it in. Used to stream certificates.
+class PathSink {
+public:
+    virtual ~PathSink() = default;
+    virtual void visit(const Vector& point, const Vector& direction) = 0;
+};
+
+struct SolveOptions {
+    Engine engine = Engine::lattice;
+    CycleDetector cycle_detector = CycleDetector::first_state;
+    Arithmetic arithmetic = Arithmetic::automatic;
+    // Stop with Reason::limit rather than perform more than this many reflections.
+    std::optional<std::uint64_t> max_steps;
+    // Engine::graph refuses (Reason::limit) scenes with more lattice states.
+    std::uint64_t max_graph_states = 2'000'000;
+    PathSink* path = nullptr;
+};
+
+Answer solve(const Scene& scene, const SolveOptions& options = {});
+
+} // namespace orthoray

@@ -1,0 +1,471 @@
+// The independent certificate checker (docs/certificates.md). It replays the
+// listed path with its own "first element met" scan in plain rationals and
+// shares no code with any solver, so trusting an answer only means trusting
+// this file and the scene parser. The certificate is read as a stream: the
+// path may have 10^8 points, so only the current state, state 1 and counters
+// are kept, never the points themselves.
+#include "orthoray/certificate.hpp"
+#include "orthoray/parse.hpp"
+
+#include <array>
+#include <climits>
+#include <cstddef>
+#include <cstdint>
+#include <istream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace orthoray {
+namespace {
+
+// Thrown when the stream ends before 'end': a truncated file is a verdict
+// (it never verifies), not a syntax error.
+struct Incomplete {};
+
+int clamp_int(long long value) {
+    return value > INT_MAX ? INT_MAX : static_cast<int>(value);
+}
+
+// ---------------------------------------------------------------- reading --
+
+struct Token {
+    std::string_view text;
+    int column = 0; // 1-based
+};
+
+// Reads the certificate one statement at a time and produces the InputErrors
+// with the file, line and column of the offending token.
+class Reader {
+public:
+    Reader(std::istream& in, const std::string& name) : in_(in), name_(name) {}
+
+    // Moves to the next non-blank statement; false at the end of the stream.
+    bool next() {
+        while (std::getline(in_, line_)) {
+            ++line_number_;
+            split();
+            if (!tokens_.empty()) return true;
+        }
+        return false;
+    }
+
+    // Like next(), but the stream must not end here.
+    void advance() {
+        if (!next()) throw Incomplete{};
+    }
+
+    std::string_view keyword() const { return tokens_[0].text; }
+    std::string_view token(std::size_t index) const { return tokens_[index].text; }
+
+    // The token at `index` (or the end of the line) is wrong.
+    [[noreturn]] void fail(std::size_t index, const std::string& expected) const {
+        std::string found;
+        int column = 0;
+        if (index < tokens_.size()) {
+            found = "'" + std::string(tokens_[index].text) + "'";
+            column = tokens_[index].column;
+        } else {
+            found = "end of line";
+            column = end_column_;
+        }
+        throw InputError(name_, clamp_int(line_number_), column,
+                         "found " + found + ", expected " + expected);
+    }
+
+    // The statement must be `keyword` followed by exactly `operands` tokens,
+    // each described by `operand` in the error when it is missing.
+    void expect(std::string_view keyword, std::size_t operands, const std::string& operand) const {
+        if (tokens_[0].text != keyword) fail(0, std::string("'").append(keyword).append("'"));
+        if (tokens_.size() < operands + 1) fail(tokens_.size(), operand);
+        if (tokens_.size() > operands + 1) fail(operands + 1, "end of line");
+    }
+
+    Rational number(std::size_t index) const {
+        NumberToken token = read_number(tokens_[index].text);
+        if (token.status == NumberToken::Status::zero_denominator)
+            fail(index, "a number with a nonzero denominator");
+        if (token.status != NumberToken::Status::ok) fail(index, "a number");
+        token.value.canonicalize(); // equality tests below need canonical form
+        return token.value;
+    }
+
+    // `dim` numbers from token `first` on; the unused slots stay zero.
+    Vector vector(std::size_t first, int dim) const {
+        Vector result;
+        for (int j = 0; j < dim; ++j) result[j] = number(first + j);
+        return result;
+    }
+
+    // Counts are written in full by the solver, so only plain digits are
+    // accepted; they may exceed 64 bits.
+    Integer count(std::size_t index) const {
+        const std::string_view text = tokens_[index].text;
+        if (text.find_first_not_of("0123456789") != std::string_view::npos)
+            fail(index, "a non-negative integer");
+        return Integer(std::string(text), 10);
+    }
+
+private:
+    // Tokens are separated by spaces or tabs; '#' starts a comment; a
+    // trailing '\r' (CRLF files) is dropped.
+    void split() {
+        tokens_.clear();
+        std::string_view text(line_);
+        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+        text = text.substr(0, text.find('#'));
+        std::size_t i = 0;
+        while (i < text.size()) {
+            if (text[i] == ' ' || text[i] == '\t') {
+                ++i;
+                continue;
+            }
+            const std::size_t start = i;
+            while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+            tokens_.push_back(
+                {text.substr(start, i - start), clamp_int(static_cast<long long>(start) + 1)});
+        }
+        end_column_ = clamp_int(static_cast<long long>(text.size()) + 1);
+    }
+
+    std::istream& in_;
+    const std::string& name_;
+    std::string line_; // reused, so memory does not grow with the file
+    std::vector<Token> tokens_;
+    long long line_number_ = 0;
+    int end_column_ = 1;
+};
+
+// --------------------------------------------------------------- geometry --
+
+// What the ray from a point meets first (at the smallest t > 0).
+struct Event {
+    bool met = false;
+    Rational t;
+    bool absorbed = false;      // an absorber is among the elements met at t
+    std::array<bool, 3> flip{}; // normal axes of the mirrors met at t
+};
+
+Event first_met(const Scene& scene, const Vector& p, const Vector& v) {
+    Event best;
+    Rational t, q;
+    for (const Element& e : scene.elements) {
+        const int k = e.axis;
+        // A ray parallel to the element's plane never meets it, even inside it.
+        if (sgn(v[k]) == 0) continue;
+        t = (e.lo[k] - p[k]) / v[k];
+        // Nothing happens at t = 0 (a start point on a mirror does not reflect).
+        if (sgn(t) <= 0) continue;
+        if (best.met && t > best.t) continue;
+        bool inside = true;
+        for (int j = 0; j < scene.dim && inside; ++j) {
+            q = p[j] + t * v[j];
+            inside = e.lo[j] <= q && q <= e.hi[j]; // closed: edges and corners count
+        }
+        if (!inside) continue;
+        if (!best.met || t < best.t) {
+            best = Event{};
+            best.met = true;
+            best.t = t;
+        }
+        // Every element met at the same t acts: any absorber stops the ray,
+        // mirrors of one axis negate that component once.
+        if (e.kind == ElementKind::absorber)
+            best.absorbed = true;
+        else
+            best.flip[k] = true;
+    }
+    return best;
+}
+
+Vector advance(const Vector& p, const Vector& v, const Rational& t, int dim) {
+    Vector q;
+    for (int j = 0; j < dim; ++j) q[j] = p[j] + t * v[j];
+    return q;
+}
+
+bool same(const Vector& a, const Vector& b, int dim) {
+    for (int j = 0; j < dim; ++j)
+        if (a[j] != b[j]) return false;
+    return true;
+}
+
+// Does `target` = p + tau v hold for some 0 <= tau <= stop.t (any tau >= 0
+// when nothing is met)? Axes where v is zero must match exactly.
+bool on_ray(const Vector& target, const Vector& p, const Vector& v, const Event& stop, int dim) {
+    std::optional<Rational> tau;
+    for (int j = 0; j < dim; ++j) {
+        if (sgn(v[j]) == 0) {
+            if (target[j] != p[j]) return false;
+            continue;
+        }
+        Rational s = (target[j] - p[j]) / v[j];
+        if (tau && *tau != s) return false;
+        tau = std::move(s);
+    }
+    if (!tau) return true; // v == 0 cannot come from a valid scene; then only p itself
+    return sgn(*tau) >= 0 && (!stop.met || *tau <= stop.t);
+}
+
+std::string show(const Vector& a, int dim) {
+    std::string text = "(";
+    for (int j = 0; j < dim; ++j) text += (j ? ", " : "") + to_string(a[j]);
+    return text + ")";
+}
+
+// Portable std::uint64_t -> mpz (unsigned long may be 32 bits).
+Integer to_integer(std::uint64_t n) {
+    Integer result = static_cast<unsigned long>(n >> 32);
+    result <<= 32;
+    result += static_cast<unsigned long>(n & 0xffffffffu);
+    return result;
+}
+
+// ------------------------------------------------------------------- path --
+
+// Replays the path point by point. After the first failure it only counts
+// points, so the rest of the file is still parsed (syntax errors win) but the
+// first failing step is the one reported.
+class PathCheck {
+public:
+    explicit PathCheck(const Scene& scene) : scene_(scene), dim_(scene.dim) {}
+
+    void point(const Vector& q) {
+        const std::uint64_t k = points_++;
+        if (failure_) return;
+        if (k == 0) {
+            if (!same(q, scene_.start, dim_))
+                fail(k, "point 0 is " + show(q, dim_) + ", not the start point " +
+                            show(scene_.start, dim_));
+            p_ = q;
+            v_ = scene_.direction;
+            return;
+        }
+        const std::string from = "point " + std::to_string(k - 1);
+        if (stopped_) return fail(k, "the ray is absorbed at " + from + ", yet a point follows");
+        const Event e = first_met(scene_, p_, v_);
+        if (!e.met)
+            return fail(k, "the ray from " + from + " meets no element, yet a point follows");
+        const Vector expected = advance(p_, v_, e.t, dim_);
+        if (!same(q, expected, dim_))
+            return fail(k, "point " + std::to_string(k) + " is " + show(q, dim_) +
+                               ", but the ray from " + from + " first meets an element at " +
+                               show(expected, dim_));
+        // Every listed segment comes before the one a hit claims, so the
+        // target must be on none of them whatever the reason.
+        if (on_ray(scene_.target, p_, v_, e, dim_))
+            return fail(k, "the target lies on the segment from " + from + " to point " +
+                               std::to_string(k));
+        p_ = q;
+        if (e.absorbed) {
+            stopped_ = true;
+            return;
+        }
+        for (int j = 0; j < dim_; ++j)
+            if (e.flip[j]) v_[j] = -v_[j];
+        // Keep state 1 and the first later state equal to it: the step map
+        // is injective, so a periodic path returns to state 1 first.
+        if (k == 1) {
+            p1_ = p_;
+            v1_ = v_;
+        } else if (!repeat_ && same(p_, p1_, dim_) && same(v_, v1_, dim_)) {
+            repeat_ = k;
+        }
+    }
+
+    const std::optional<std::string>& failure() const { return failure_; }
+    std::uint64_t points() const { return points_; }
+    const Vector& p() const { return p_; }
+    const Vector& v() const { return v_; }
+    const Vector& p1() const { return p1_; }
+    const Vector& v1() const { return v1_; }
+    bool stopped() const { return stopped_; }
+    const std::optional<std::uint64_t>& repeat() const { return repeat_; }
+
+private:
+    void fail(std::uint64_t step, const std::string& what) {
+        failure_ = "invalid: step " + std::to_string(step) + ": " + what;
+    }
+
+    const Scene& scene_;
+    const int dim_;
+    std::uint64_t points_ = 0;
+    Vector p_, v_;         // the last point and the direction the ray leaves it in
+    Vector p1_, v1_;       // state 1
+    bool stopped_ = false; // an absorber is met at the last point
+    std::optional<std::uint64_t> repeat_;
+    std::optional<std::string> failure_;
+};
+
+// ---------------------------------------------------------------- verdict --
+
+// The verdict lines after the points; `extra` holds the reason's own vector
+// (target, direction, or the point of `state`) and `extra_v` the state's
+// direction.
+struct Claim {
+    std::string answer;
+    Reason reason = Reason::limit;
+    Integer reflections;
+    Vector extra, extra_v;
+    Integer period;
+};
+
+Verdict bad(const std::string& what) {
+    return {false, "invalid: verdict: " + what};
+}
+
+Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
+    if (path.failure()) return {false, *path.failure()};
+    const int dim = scene.dim;
+    const char* reason = to_string(claim.reason);
+    const char* word = claim.reason == Reason::hit     ? "yes"
+                       : claim.reason == Reason::limit ? "unknown"
+                                                       : "no";
+    if (claim.answer != word)
+        return bad("answer " + claim.answer + " does not go with reason " + reason);
+
+    const std::uint64_t last = path.points() - 1; // index of the last point
+    const std::string at_last = "point " + std::to_string(last);
+    if (path.stopped() && claim.reason != Reason::absorbed)
+        return bad("the ray is absorbed at " + at_last + ", yet the reason is " + reason);
+
+    // Reflections implied by the point count (see the table in the docs).
+    Integer expected = to_integer(last);
+    switch (claim.reason) {
+    case Reason::hit:
+        if (!same(claim.extra, scene.target, dim))
+            return bad("target " + show(claim.extra, dim) + " is not the scene's target " +
+                       show(scene.target, dim));
+        if (!on_ray(scene.target, path.p(), path.v(), first_met(scene, path.p(), path.v()), dim))
+            return bad("the target does not lie on the ray from " + at_last +
+                       " up to the next element met");
+        break;
+    case Reason::escape: {
+        const Event e = first_met(scene, path.p(), path.v());
+        if (e.met)
+            return bad("the ray from " + at_last + " meets an element at " +
+                       show(advance(path.p(), path.v(), e.t, dim), dim));
+        if (!same(claim.extra, path.v(), dim))
+            return bad("direction " + show(claim.extra, dim) + " is not the ray's direction " +
+                       show(path.v(), dim));
+        if (on_ray(scene.target, path.p(), path.v(), e, dim))
+            return bad("the target lies on the final ray from " + at_last);
+        break;
+    }
+    case Reason::absorbed:
+        if (!path.stopped()) return bad("no absorber is met at " + at_last);
+        expected -= 1;
+        break;
+    case Reason::cycle: {
+        if (path.points() < 3) return bad("a cycle needs at least two points after point 0");
+        expected -= 1; // L = last - 1
+        if (!same(claim.extra, path.p1(), dim) || !same(claim.extra_v, path.v1(), dim))
+            return bad("state " + show(claim.extra, dim) + " " + show(claim.extra_v, dim) +
+                       " is not state 1 " + show(path.p1(), dim) + " " + show(path.v1(), dim));
+        if (claim.period != expected)
+            return bad("period " + claim.period.get_str() + ", but " + std::to_string(last + 1) +
+                       " points give period " + expected.get_str());
+        if (!path.repeat()) return bad("the state at " + at_last + " is not state 1");
+        if (*path.repeat() != last)
+            return bad("state " + std::to_string(*path.repeat()) +
+                       " already equals state 1, so the period is " +
+                       std::to_string(*path.repeat() - 1) + ", not " + expected.get_str());
+        break;
+    }
+    case Reason::limit:
+        break;
+    }
+    if (claim.reflections != expected)
+        return bad("reflections " + claim.reflections.get_str() + ", but " +
+                   std::to_string(last + 1) + " points give " + expected.get_str() +
+                   " for reason " + reason);
+    if (claim.reason == Reason::limit)
+        return {false, "partial certificate: " + expected.get_str() +
+                           " reflections checked, no answer proven"};
+    return {true, "valid: " + std::string(reason) + ", " + expected.get_str() + " reflections"};
+}
+
+Reason read_reason(const Reader& in) {
+    static constexpr Reason all[] = {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle,
+                                     Reason::limit};
+    in.expect("reason", 1, "hit, escape, absorbed, cycle or limit");
+    for (Reason r : all)
+        if (in.token(1) == to_string(r)) return r;
+    in.fail(1, "hit, escape, absorbed, cycle or limit");
+}
+
+} // namespace
+
+Verdict verify_certificate(const Scene& scene, std::istream& certificate,
+                           const std::string& certificate_name) {
+    Reader in(certificate, certificate_name);
+    PathCheck path(scene);
+    Claim claim;
+    const int dim = scene.dim;
+    const std::string dim_text = std::to_string(dim);
+    try {
+        in.advance();
+        in.expect("orthoray-certificate", 1, "the format version 1");
+        if (in.token(1) != "1") in.fail(1, "the format version 1");
+        in.advance();
+        in.expect("dim", 1, "'" + dim_text + "'");
+        if (in.token(1) != dim_text) in.fail(1, "'" + dim_text + "' (the scene's dim)");
+
+        in.advance();
+        while (in.keyword() == "point") {
+            in.expect("point", dim, "a number");
+            path.point(in.vector(1, dim));
+            in.advance();
+        }
+        if (path.points() == 0) in.fail(0, "'point'");
+        if (in.keyword() != "answer") in.fail(0, "'point' or 'answer'");
+        in.expect("answer", 1, "yes, no or unknown");
+        claim.answer = std::string(in.token(1));
+        if (claim.answer != "yes" && claim.answer != "no" && claim.answer != "unknown")
+            in.fail(1, "yes, no or unknown");
+        in.advance();
+        claim.reason = read_reason(in);
+        in.advance();
+        in.expect("reflections", 1, "a non-negative integer");
+        claim.reflections = in.count(1);
+
+        // The reason's own statements, in the order of the docs' table.
+        switch (claim.reason) {
+        case Reason::hit:
+            in.advance();
+            in.expect("target", dim, "a number");
+            claim.extra = in.vector(1, dim);
+            break;
+        case Reason::escape:
+            in.advance();
+            in.expect("direction", dim, "a number");
+            claim.extra = in.vector(1, dim);
+            break;
+        case Reason::absorbed:
+            break;
+        case Reason::cycle:
+            in.advance();
+            in.expect("state", 2 * dim, "a number");
+            claim.extra = in.vector(1, dim);
+            claim.extra_v = in.vector(1 + dim, dim);
+            in.advance();
+            in.expect("period", 1, "a non-negative integer");
+            claim.period = in.count(1);
+            break;
+        case Reason::limit:
+            in.advance();
+            in.expect("partial", 0, "end of line");
+            break;
+        }
+        in.advance();
+        in.expect("end", 0, "end of line");
+        if (in.next()) in.fail(0, "end of file (nothing may follow 'end')");
+    } catch (const Incomplete&) {
+        return {false, "invalid: incomplete certificate (no 'end' line)"};
+    }
+    return judge(scene, path, claim);
+}
+
+} // namespace orthoray

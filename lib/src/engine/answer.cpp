@@ -1,0 +1,26 @@
+#include "orthoray/answer.hpp"
+
+namespace orthoray {
+
+const char* to_string(Reason reason) {
+    switch (reason) {
+    case Reason::hit:
+        return "hit";
+    case Reason::escape:
+        return "escape";
+    case Reason::absorbed:
+        return "absorbed";
+    case Reason::cycle:
+        return "cycle";
+    case Reason::limit:
+        return "limit";
+    }
+    return "?";
+}
+
+const char* answer_word(const Answer& answer) {
+    if (!answer.decided()) return "unknown";
+    return answer.yes() ? "yes" : "no";
+}
+
+} // namespace orthoray

@@ -1,0 +1,60 @@
+// Cycle detectors: both see the states after reflections 1, 2, 3, ... and
+// say when the trajectory has shown itself periodic, with the least period.
+// Both keep O(1) states, so memory never grows with the number of reflections.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+namespace orthoray::engine {
+
+// The step map on states is injective (reflection is reversible), so a
+// periodic trajectory is purely periodic from reflection 1 on: it returns to
+// state 1 first, and the first return time is the period.
+template <class State>
+class FirstStateDetector {
+public:
+    std::optional<std::uint64_t> observe(const State& s, std::uint64_t reflection) {
+        if (reflection == 1) {
+            first_ = s;
+            return std::nullopt;
+        }
+        if (s == first_) return reflection - 1;
+        return std::nullopt;
+    }
+
+private:
+    State first_{};
+};
+
+// Brent's algorithm: a saved state moves to the current one whenever the
+// distance reaches a power of two; the first time the current state equals
+// the saved one, the distance is the least period. It needs no injectivity
+// (it also finds cycles entered after a tail), at the price of noticing the
+// cycle up to about twice as late.
+template <class State>
+class BrentDetector {
+public:
+    std::optional<std::uint64_t> observe(const State& s, std::uint64_t reflection) {
+        if (reflection == 1) {
+            saved_ = s;
+            power_ = 1;
+            distance_ = 0;
+            return std::nullopt;
+        }
+        ++distance_;
+        if (s == saved_) return distance_;
+        if (distance_ == power_) {
+            saved_ = s;
+            power_ *= 2;
+            distance_ = 0;
+        }
+        return std::nullopt;
+    }
+
+private:
+    State saved_{};
+    std::uint64_t power_ = 1, distance_ = 0;
+};
+
+} // namespace orthoray::engine

@@ -1,0 +1,24 @@
+// One step of the reference tracer: the spec's motion rule read literally,
+// in rationals, scanning every element (O(n) per step). It is the oracle the
+// tests hold the fast engine to, so it is kept as plain as possible.
+#pragma once
+
+#include "orthoray/scene.hpp"
+
+namespace orthoray::engine {
+
+struct ReferenceEvent {
+    bool escape = true;    // nothing is met for t > 0
+    bool absorbed = false; // an absorber is met at `point`
+    Rational t;            // parameter of `point` along p + t v
+    Vector point;
+    Vector direction; // the direction after reflecting at `point`
+};
+
+ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v);
+
+// Whether x lies on p + tau v for 0 <= tau <= event.t (any tau >= 0 on escape).
+bool reference_passes(const Scene& scene, const Vector& x, const Vector& p, const Vector& v,
+                      const ReferenceEvent& event);
+
+} // namespace orthoray::engine

@@ -1,0 +1,49 @@
+// solve(): picks the engine the options ask for.
+#include "orthoray/solve.hpp"
+
+#include "engine/lattice_engine.hpp"
+#include "engine/reference_tracer.hpp"
+#include "orthoray/state_graph.hpp"
+
+#include <stdexcept>
+
+namespace orthoray {
+namespace {
+
+// The graph engine answers all at once; to honour max_steps like the
+// simulations, it reports a limit when they would have needed more
+// reflections (a cycle of period L is seen at reflection L + 1).
+Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
+    if (options.path) throw std::invalid_argument("the graph engine does not write certificates");
+    auto report = explore_state_graph(scene, options.max_graph_states);
+    Answer answer;
+    answer.engine = "graph";
+    answer.arithmetic = "rational";
+    if (!report) return answer; // too many states: Reason::limit, 0 reflections
+    answer = report->answer;
+    if (options.max_steps) {
+        Integer needed = answer.reflections + (answer.reason == Reason::cycle ? 1 : 0);
+        Integer cap = Integer(static_cast<unsigned long>(*options.max_steps));
+        if (needed > cap) {
+            answer.reason = Reason::limit;
+            answer.reflections = cap;
+        }
+    }
+    return answer;
+}
+
+} // namespace
+
+Answer solve(const Scene& scene, const SolveOptions& options) {
+    switch (options.engine) {
+    case Engine::reference:
+        return engine::solve_by_reference(scene, options);
+    case Engine::graph:
+        return solve_by_graph(scene, options);
+    case Engine::lattice:
+        break;
+    }
+    return engine::solve_on_lattice(scene, options);
+}
+
+} // namespace orthoray

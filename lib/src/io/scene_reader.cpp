@@ -1,0 +1,263 @@
+// The .scene reader. It works line by line: check the bytes, drop the
+// comment, split into tokens, then read one statement. The first problem
+// found becomes the one InputError, with the 1-based line and byte column of
+// the offending token (or of the end of the line when a token is missing).
+#include "orthoray/parse.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+namespace orthoray {
+
+InputError::InputError(const std::string& file, int line, int column, const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                         message),
+      file_(file), line_(line), column_(column), message_(message) {}
+
+namespace {
+
+struct Token {
+    std::string_view text;
+    int column;
+};
+
+// Quotes a token for a message, escaping anything that is not printable ASCII
+// so that binary garbage never reaches the terminal as is.
+std::string quoted(std::string_view text) {
+    std::string out = "'";
+    for (unsigned char c : text.substr(0, 60)) {
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02X", c);
+            out += buf;
+        }
+    }
+    if (text.size() > 60) out += "...";
+    return out + "'";
+}
+
+constexpr const char* number_forms = "a number (integer, fraction like 7/2, or decimal like 0.125)";
+
+class SceneReader {
+public:
+    SceneReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
+
+    Scene read() {
+        std::size_t begin = 0;
+        int line_number = 0;
+        while (true) {
+            ++line_number;
+            std::size_t end = text_.find('\n', begin);
+            std::string_view line = text_.substr(
+                begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+            read_line(line, line_number);
+            if (end == std::string_view::npos) {
+                eof_line_ = line_number;
+                eof_column_ = static_cast<int>(line.size()) + 1;
+                break;
+            }
+            begin = end + 1;
+        }
+        if (dim_line_ == 0) fail_at_eof("'dim 2' or 'dim 3' as the first statement");
+        if (ray_line_ == 0) fail_at_eof("a 'ray' statement");
+        if (target_line_ == 0) fail_at_eof("a 'target' statement");
+        return std::move(scene_);
+    }
+
+private:
+    std::string_view text_;
+    const std::string& file_;
+    Scene scene_;
+    int dim_line_ = 0, ray_line_ = 0, target_line_ = 0;
+    int eof_line_ = 0, eof_column_ = 0;
+
+    // Per-line state while reading one statement.
+    std::vector<Token> tokens_;
+    std::size_t next_ = 0;
+    int line_ = 0, end_column_ = 0;
+
+    [[noreturn]] void fail(int column, const std::string& message) const {
+        throw InputError(file_, line_, column, message);
+    }
+    [[noreturn]] void fail_at_eof(const std::string& expected) const {
+        throw InputError(file_, eof_line_, eof_column_, "found end of file, expected " + expected);
+    }
+
+    void read_line(std::string_view line, int line_number) {
+        line_ = line_number;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1); // CRLF
+        std::size_t comment = line.find('#');
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            auto c = static_cast<unsigned char>(line[i]);
+            bool control = (c < 0x20 && c != '\t') || c == 0x7f;
+            bool foreign = c >= 0x80 && i < comment; // UTF-8 is fine inside comments
+            if (control || foreign) {
+                char buf[64];
+                std::snprintf(buf, sizeof buf, "found byte 0x%02X, expected plain ASCII text", c);
+                fail(static_cast<int>(i) + 1, buf);
+            }
+        }
+        std::string_view code = line.substr(0, comment);
+        tokens_.clear();
+        next_ = 0;
+        for (std::size_t i = 0; i < code.size();) {
+            if (code[i] == ' ' || code[i] == '\t') {
+                ++i;
+                continue;
+            }
+            std::size_t j = i;
+            while (j < code.size() && code[j] != ' ' && code[j] != '\t') ++j;
+            tokens_.push_back({code.substr(i, j - i), static_cast<int>(i) + 1});
+            i = j;
+        }
+        end_column_ = static_cast<int>(code.size()) + 1;
+        if (!tokens_.empty()) read_statement();
+    }
+
+    const Token& take(const std::string& expected) {
+        if (next_ == tokens_.size()) fail(end_column_, "found end of line, expected " + expected);
+        return tokens_[next_++];
+    }
+
+    void expect_end_of_line() {
+        if (next_ < tokens_.size())
+            fail(tokens_[next_].column,
+                 "found " + quoted(tokens_[next_].text) + ", expected end of line");
+    }
+
+    Rational take_number(const std::string& what) {
+        const Token& t = take(what);
+        NumberToken n = read_number(t.text);
+        if (n.status == NumberToken::Status::zero_denominator)
+            fail(t.column,
+                 "found " + quoted(t.text) + ", expected " + what + " with a nonzero denominator");
+        if (n.status != NumberToken::Status::ok)
+            fail(t.column, "found " + quoted(t.text) + ", expected " + what + ": " + number_forms);
+        return n.value;
+    }
+
+    int axis_of(const Token& t) const {
+        if (t.text.size() == 1 && t.text[0] >= 'x' && t.text[0] < 'x' + scene_.dim)
+            return t.text[0] - 'x';
+        return -1;
+    }
+
+    std::string axis_letters() const { return scene_.dim == 2 ? "x or y" : "x, y or z"; }
+
+    void read_statement() {
+        const Token& head = tokens_[next_++];
+        if (dim_line_ == 0 && head.text != "dim")
+            fail(head.column, "found " + quoted(head.text) +
+                                  ", expected 'dim 2' or 'dim 3' as the first statement");
+        if (head.text == "dim") return read_dim(head);
+        if (head.text == "mirror") return read_element(ElementKind::mirror);
+        if (head.text == "absorber") return read_element(ElementKind::absorber);
+        if (head.text == "ray") return read_ray(head);
+        if (head.text == "target") return read_target(head);
+        fail(head.column, "found " + quoted(head.text) +
+                              ", expected a statement: dim, mirror, absorber, ray or target");
+    }
+
+    void read_dim(const Token& head) {
+        if (dim_line_ != 0)
+            fail(head.column, "found a second 'dim' (the first is on line " +
+                                  std::to_string(dim_line_) + "), expected one 'dim' statement");
+        const Token& t = take("the dimension 2 or 3");
+        if (t.text != "2" && t.text != "3")
+            fail(t.column, "found " + quoted(t.text) + ", expected the dimension 2 or 3");
+        scene_.dim = t.text[0] - '0';
+        dim_line_ = line_;
+        expect_end_of_line();
+    }
+
+    void read_element(ElementKind kind) {
+        Element e;
+        e.kind = kind;
+        e.line = line_;
+        const Token& a = take("the normal axis (" + axis_letters() + ")");
+        e.axis = axis_of(a);
+        if (e.axis < 0)
+            fail(a.column, "found " + quoted(a.text) + ", expected the normal axis (" +
+                               axis_letters() + ") of a " + std::to_string(scene_.dim) + "D scene");
+        std::string normal(1, axis_name(e.axis));
+        e.lo[e.axis] = e.hi[e.axis] = take_number("the offset " + normal + " = c");
+        for (int j = 0; j < scene_.dim; ++j) {
+            if (j == e.axis) continue;
+            std::string name(1, axis_name(j));
+            const Token& t = take("'" + name + "' and its extent");
+            if (t.text != name)
+                fail(t.column, "found " + quoted(t.text) + ", expected '" + name +
+                                   "' (the other axes, in the order x, y, z)");
+            e.lo[j] = take_number("the lower end of the " + name + " extent");
+            const Token& hi_token = tokens_[next_ < tokens_.size() ? next_ : 0];
+            e.hi[j] = take_number("the upper end of the " + name + " extent");
+            if (!(e.lo[j] < e.hi[j]))
+                fail(hi_token.column,
+                     "found " + quoted(hi_token.text) + " as the upper end of the " + name +
+                         " extent, expected a number greater than " + to_string(e.lo[j]));
+        }
+        expect_end_of_line();
+        scene_.elements.push_back(std::move(e));
+    }
+
+    void read_ray(const Token& head) {
+        if (ray_line_ != 0)
+            fail(head.column, "found a second 'ray' (the first is on line " +
+                                  std::to_string(ray_line_) + "), expected one 'ray' statement");
+        for (int j = 0; j < scene_.dim; ++j)
+            scene_.start[j] = take_number(std::string("the start ") + axis_name(j));
+        int direction_column = next_ < tokens_.size() ? tokens_[next_].column : end_column_;
+        bool zero = true;
+        for (int j = 0; j < scene_.dim; ++j) {
+            scene_.direction[j] = take_number(std::string("the direction's ") + axis_name(j));
+            zero = zero && scene_.direction[j] == 0;
+        }
+        if (zero) fail(direction_column, "found the direction 0, expected a nonzero direction");
+        expect_end_of_line();
+        ray_line_ = line_;
+    }
+
+    void read_target(const Token& head) {
+        if (target_line_ != 0)
+            fail(head.column, "found a second 'target' (the first is on line " +
+                                  std::to_string(target_line_) +
+                                  "), expected one 'target' statement");
+        for (int j = 0; j < scene_.dim; ++j)
+            scene_.target[j] = take_number(std::string("the target ") + axis_name(j));
+        expect_end_of_line();
+        target_line_ = line_;
+    }
+};
+
+} // namespace
+
+Scene read_scene(std::string_view text, const std::string& file) {
+    return SceneReader(text, file).read();
+}
+
+std::string read_file(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path, 1, 1, "found a directory, expected a readable file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(path, 1, 1,
+                         std::string("found no readable file (") + std::strerror(errno) +
+                             "), expected a readable file");
+    std::ostringstream content;
+    content << in.rdbuf();
+    return content.str();
+}
+
+Scene load_scene(const std::string& path) {
+    return read_scene(read_file(path), path);
+}
+
+} // namespace orthoray

@@ -1,0 +1,125 @@
+#include "lattice/lattice_scene.hpp"
+
+#include <algorithm>
+
+namespace orthoray::lattice {
+namespace {
+
+Integer lcm(const Integer& a, const Integer& b) {
+    Integer r;
+    mpz_lcm(r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+    return r;
+}
+
+Integer abs_of(const Integer& a) {
+    return a < 0 ? Integer(-a) : a;
+}
+
+} // namespace
+
+LatticeScene make_lattice(const Scene& scene) {
+    LatticeScene out;
+    out.scene = &scene;
+    const Vector& v = scene.direction;
+
+    // Primitive integer direction u and L = lcm |u_j|.
+    Integer vden = 1;
+    for (int j = 0; j < scene.dim; ++j) vden = lcm(vden, v[j].get_den());
+    Coords u;
+    Integer g = 0;
+    for (int j = 0; j < scene.dim; ++j) {
+        u[j] = v[j].get_num() * (vden / v[j].get_den());
+        mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), u[j].get_mpz_t());
+    }
+    Integer L = 1;
+    for (int j = 0; j < scene.dim; ++j) {
+        if (u[j] == 0) continue;
+        u[j] /= g;
+        L = lcm(L, abs_of(u[j]));
+        out.active[out.dim++] = j;
+    }
+
+    // Which elements the ray can meet at all.
+    auto spans_start = [&](const Element& e) {
+        if (v[e.axis] == 0) return false; // moving parallel to its plane
+        for (int j = 0; j < scene.dim; ++j)
+            if (v[j] == 0 && (scene.start[j] < e.lo[j] || e.hi[j] < scene.start[j])) return false;
+        return true;
+    };
+
+    // D: the lcm of all denominators on active axes.
+    Integer D = 1;
+    auto take_denominators = [&](const Vector& x) {
+        for (int i = 0; i < out.dim; ++i) D = lcm(D, x[out.active[i]].get_den());
+    };
+    take_denominators(scene.start);
+    take_denominators(scene.target);
+    for (const Element& e : scene.elements) {
+        if (!spans_start(e)) continue;
+        take_denominators(e.lo);
+        take_denominators(e.hi);
+    }
+    for (int i = 0; i < out.dim; ++i) out.scale[i] = D * L / abs_of(u[out.active[i]]);
+
+    auto scaled = [&](const Rational& x, int i) {
+        Rational r = x * out.scale[i];
+        return Integer(r.get_num()); // integral by the choice of D
+    };
+    auto track = [&](const Integer& x) {
+        Integer a = abs_of(x);
+        if (a > out.magnitude) out.magnitude = a;
+    };
+    for (int i = 0; i < out.dim; ++i) {
+        out.start[i] = scaled(scene.start[out.active[i]], i);
+        track(out.start[i]);
+        if (v[out.active[i]] < 0) out.start_direction |= 1u << i;
+    }
+    out.target_reachable = out.to_lattice(scene.target, out.target);
+    if (out.target_reachable)
+        for (int i = 0; i < out.dim; ++i) track(out.target[i]);
+    for (const Element& e : scene.elements) {
+        if (!spans_start(e)) continue;
+        LatticeElement le;
+        le.absorber = e.kind == ElementKind::absorber;
+        for (int i = 0; i < out.dim; ++i) {
+            if (out.active[i] == e.axis) le.axis = i;
+            le.lo[i] = scaled(e.lo[out.active[i]], i);
+            le.hi[i] = scaled(e.hi[out.active[i]], i);
+            track(le.lo[i]);
+            track(le.hi[i]);
+        }
+        out.elements.push_back(std::move(le));
+    }
+    return out;
+}
+
+Vector LatticeScene::point(const Coords& p) const {
+    Vector x = scene->start; // inactive coordinates never change
+    for (int i = 0; i < dim; ++i) {
+        x[active[i]] = Rational(p[i], scale[i]);
+        x[active[i]].canonicalize();
+    }
+    return x;
+}
+
+Vector LatticeScene::direction(unsigned mask) const {
+    Vector d;
+    for (int i = 0; i < dim; ++i) {
+        const Rational& v = scene->direction[active[i]];
+        d[active[i]] = ((mask >> i) & 1u) ? Rational(-abs(v)) : Rational(abs(v));
+    }
+    return d;
+}
+
+bool LatticeScene::to_lattice(const Vector& x, Coords& out) const {
+    for (int j = 0; j < scene->dim; ++j)
+        if (scene->direction[j] == 0 && x[j] != scene->start[j]) return false;
+    for (int i = 0; i < dim; ++i) {
+        Rational r = x[active[i]] * scale[i];
+        if (r.get_den() != 1) return false;
+        out[i] = r.get_num();
+    }
+    return true;
+}
+
+} // namespace orthoray::lattice

@@ -1,0 +1,54 @@
+// The scene on its integer lattice.
+//
+// Let u be the ray's direction scaled to a primitive integer vector, L the
+// lcm of its nonzero components and D the lcm of every denominator in the
+// scene. Scaling each axis j with u_j != 0 by D * L / |u_j| (a different
+// factor per axis) makes every mirror, the start and the target integral and
+// turns the direction into (±L, ..., ±L), i.e. a diagonal (±1, ..., ±1).
+// Reflections only flip signs, so the ray stays diagonal forever, and a
+// diagonal ray from an integer point meets integer hyperplanes at integer
+// points: every reflection point is a lattice point (Reif, Tygar and Yoshida
+// 1994). Axes with u_j = 0 never change: they are dropped ("inactive"),
+// together with every element the ray can never meet (normal on an inactive
+// axis, or not spanning the ray's fixed coordinate). What remains is an
+// M-dimensional problem, M = number of nonzero direction components.
+#pragma once
+
+#include "orthoray/scene.hpp"
+
+#include <array>
+#include <vector>
+
+namespace orthoray::lattice {
+
+using Coords = std::array<Integer, 3>;
+
+struct LatticeElement {
+    bool absorber = false;
+    int axis = 0;  // normal axis, in active coordinates
+    Coords lo, hi; // closed box; lo[axis] == hi[axis]
+};
+
+struct LatticeScene {
+    int dim = 0;                 // M: active axes, 1..3
+    std::array<int, 3> active{}; // scene axis of active axis i
+    Coords scale;                // X_i = x_active[i] * scale[i]
+    std::vector<LatticeElement> elements;
+    Coords start;
+    unsigned start_direction = 0;  // bit i set: moving towards -infinity on active axis i
+    bool target_reachable = false; // false when the target is off the ray's fixed coordinates
+    Coords target;
+    Integer magnitude; // max |value| over elements, start and target
+    const Scene* scene = nullptr;
+
+    // Back to scene coordinates (exact): a lattice point, a direction mask.
+    Vector point(const Coords& p) const;
+    Vector direction(unsigned mask) const;
+    // Whether a scene point lies on the lattice (inactive coordinates equal
+    // the start's, active ones integral after scaling); if so, its coordinates.
+    bool to_lattice(const Vector& x, Coords& out) const;
+};
+
+LatticeScene make_lattice(const Scene& scene);
+
+} // namespace orthoray::lattice

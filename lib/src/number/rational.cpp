@@ -1,0 +1,62 @@
+// Exact rational numbers from and to text.
+#include "orthoray/number.hpp"
+
+#include <cctype>
+
+namespace orthoray {
+namespace {
+
+bool all_digits(std::string_view s) {
+    if (s.empty()) return false;
+    for (char c : s)
+        if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+    return true;
+}
+
+Integer integer_of(std::string_view digits) {
+    return Integer(std::string(digits), 10);
+}
+
+} // namespace
+
+NumberToken read_number(std::string_view text) {
+    NumberToken result;
+    bool negative = false;
+    if (!text.empty() && (text.front() == '+' || text.front() == '-')) {
+        negative = text.front() == '-';
+        text.remove_prefix(1);
+    }
+    if (auto slash = text.find('/'); slash != std::string_view::npos) {
+        std::string_view num = text.substr(0, slash), den = text.substr(slash + 1);
+        if (!all_digits(num) || !all_digits(den)) return result;
+        Integer d = integer_of(den);
+        if (d == 0) {
+            result.status = NumberToken::Status::zero_denominator;
+            return result;
+        }
+        result.value = Rational(integer_of(num), d);
+    } else if (auto dot = text.find('.'); dot != std::string_view::npos) {
+        // An exact decimal: 12.375 = 12375 / 10^3. At least one digit overall.
+        std::string_view whole = text.substr(0, dot), frac = text.substr(dot + 1);
+        if ((!whole.empty() && !all_digits(whole)) || (!frac.empty() && !all_digits(frac)) ||
+            (whole.empty() && frac.empty()))
+            return result;
+        Integer scale;
+        mpz_ui_pow_ui(scale.get_mpz_t(), 10, frac.size());
+        Integer digits = integer_of(std::string(whole.empty() ? "0" : whole) + std::string(frac));
+        result.value = Rational(digits, scale);
+    } else {
+        if (!all_digits(text)) return result;
+        result.value = Rational(integer_of(text));
+    }
+    result.value.canonicalize();
+    if (negative) result.value = -result.value;
+    result.status = NumberToken::Status::ok;
+    return result;
+}
+
+std::string to_string(const Rational& value) {
+    return value.get_str(10);
+}
+
+} // namespace orthoray

@@ -1,0 +1,201 @@
+// Next-hit queries on the lattice: a uniform grid walked with an exact
+// integer DDA.
+//
+// The ray is diagonal (see lattice_scene.hpp), so from point p in direction
+// sigma in {±1}^M it is p + t*sigma, and it crosses cell walls at integer t.
+// Each element is registered in every cell whose CLOSED box meets the
+// element's closed box, so a point where the ray meets an element is always
+// found in the cell being walked when the ray is there, even on a cell wall
+// or corner. Walking cells in order of t, the first cell that holds a hit
+// with 0 < t <= t_exit(cell) holds the smallest such t over the whole scene,
+// and all elements met at that t (they all contain the hit point, which lies
+// in the cell's closed box).
+#pragma once
+
+#include "lattice/lattice_int.hpp"
+#include "lattice/lattice_scene.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace orthoray::lattice {
+
+// What the ray meets next: nothing (escape), or at parameter t > 0 a point
+// where `flip` holds the normal axes of the mirrors met (bit i: active axis i)
+// and `absorber` says whether an absorber is met too.
+template <class Int>
+struct Shot {
+    bool escape = true;
+    bool absorber = false;
+    unsigned flip = 0;
+    Int t{};
+};
+
+template <class Int, int M>
+class UniformGrid {
+public:
+    explicit UniformGrid(const LatticeScene& scene);
+
+    // `negative` bit i set: the ray moves towards -infinity on axis i.
+    Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
+
+    std::size_t cell_count() const { return offsets_.size() - 1; }
+
+private:
+    struct Item {
+        Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
+        std::uint8_t axis;
+        bool absorber;
+    };
+    std::vector<Item> items_;
+    Int lo_[M], hi_[M], h_[M];           // bounding box, cell size
+    std::int64_t n_[M]{};                // cells per axis
+    std::vector<std::uint32_t> offsets_; // CSR: cell -> [offsets_[c], offsets_[c+1]) in members_
+    std::vector<std::uint32_t> members_;
+
+    std::int64_t cell_index(const std::int64_t (&i)[M]) const {
+        std::int64_t c = 0;
+        for (int j = M - 1; j >= 0; --j) c = c * n_[j] + i[j];
+        return c;
+    }
+};
+
+template <class Int, int M>
+UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene) {
+    for (const LatticeElement& e : scene.elements) {
+        Item it;
+        for (int j = 0; j < M; ++j) {
+            it.lo[j] = from_integer<Int>(e.lo[j]);
+            it.hi[j] = from_integer<Int>(e.hi[j]);
+        }
+        it.axis = static_cast<std::uint8_t>(e.axis);
+        it.absorber = e.absorber;
+        items_.push_back(std::move(it));
+    }
+    if (items_.empty()) {
+        offsets_.assign(1, 0);
+        return;
+    }
+    for (int j = 0; j < M; ++j) {
+        lo_[j] = items_[0].lo[j];
+        hi_[j] = items_[0].hi[j];
+        for (const Item& it : items_) {
+            if (it.lo[j] < lo_[j]) lo_[j] = it.lo[j];
+            if (hi_[j] < it.hi[j]) hi_[j] = it.hi[j];
+        }
+    }
+    // About two cells per element: k cells per axis with k^M >= 2n, fewer on
+    // an axis whose extent has fewer lattice points.
+    std::int64_t k = 1, want = 2 * static_cast<std::int64_t>(items_.size());
+    while (true) {
+        std::int64_t p = 1;
+        for (int j = 0; j < M; ++j) p *= k;
+        if (p >= want) break;
+        ++k;
+    }
+    std::int64_t total = 1;
+    for (int j = 0; j < M; ++j) {
+        Int points = hi_[j] - lo_[j] + 1;
+        Int cells = points < Int(k) ? points : Int(k);
+        h_[j] = floor_div(points + cells - 1, cells);
+        n_[j] = to_index(floor_div(points + h_[j] - 1, h_[j]));
+        total *= n_[j];
+    }
+    // Cells i along axis j whose closed box [lo + i h, lo + (i+1) h] meets
+    // [a, b]: floor((a - lo - 1) / h) <= i <= floor((b - lo) / h), clamped.
+    auto range = [&](const Item& it, int j, std::int64_t& first, std::int64_t& last) {
+        first = std::max<std::int64_t>(0, to_index(floor_div(it.lo[j] - lo_[j] - 1, h_[j])));
+        last = std::min<std::int64_t>(n_[j] - 1, to_index(floor_div(it.hi[j] - lo_[j], h_[j])));
+    };
+    auto for_each_cell = [&](const Item& it, auto&& visit) {
+        std::int64_t first[M], last[M], i[M];
+        for (int j = 0; j < M; ++j) {
+            range(it, j, first[j], last[j]);
+            i[j] = first[j];
+        }
+        while (true) {
+            visit(cell_index(i));
+            int j = 0;
+            while (j < M && i[j] == last[j]) i[j] = first[j], ++j;
+            if (j == M) break;
+            ++i[j];
+        }
+    };
+    offsets_.assign(static_cast<std::size_t>(total) + 1, 0);
+    for (const Item& it : items_) for_each_cell(it, [&](std::int64_t c) { ++offsets_[c + 1]; });
+    for (std::size_t c = 1; c < offsets_.size(); ++c) offsets_[c] += offsets_[c - 1];
+    members_.resize(offsets_.back());
+    std::vector<std::uint32_t> fill(offsets_.begin(), offsets_.end() - 1);
+    for (std::uint32_t e = 0; e < items_.size(); ++e)
+        for_each_cell(items_[e], [&](std::int64_t c) { members_[fill[c]++] = e; });
+}
+
+template <class Int, int M>
+Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
+    Shot<Int> shot;
+    if (items_.empty()) return shot;
+    auto neg = [&](int j) { return ((negative >> j) & 1u) != 0; };
+
+    // Clip the ray to the closed bounding box: t in [t_in, t_out].
+    Int t_in = 0, t_out = 0;
+    for (int j = 0; j < M; ++j) {
+        Int enter = neg(j) ? Int(p[j] - hi_[j]) : Int(lo_[j] - p[j]);
+        Int leave = neg(j) ? Int(p[j] - lo_[j]) : Int(hi_[j] - p[j]);
+        if (t_in < enter) t_in = enter;
+        if (j == 0 || leave < t_out) t_out = leave;
+    }
+    if (t_out < t_in || t_out <= 0) return shot;
+
+    // The cell the ray is in just after t_in, and the t at which it crosses
+    // the next wall on each axis.
+    std::int64_t i[M];
+    Int wall_t[M];
+    for (int j = 0; j < M; ++j) {
+        Int q = neg(j) ? Int(p[j] - t_in) : Int(p[j] + t_in);
+        Int rel = q - lo_[j];
+        std::int64_t c = to_index(neg(j) ? floor_div(rel - 1, h_[j]) : floor_div(rel, h_[j]));
+        i[j] = std::clamp<std::int64_t>(c, 0, n_[j] - 1);
+        Int wall = lo_[j] + Int(i[j] + (neg(j) ? 0 : 1)) * h_[j];
+        wall_t[j] = neg(j) ? Int(p[j] - wall) : Int(wall - p[j]);
+    }
+
+    while (true) {
+        Int t_exit = wall_t[0];
+        for (int j = 1; j < M; ++j)
+            if (wall_t[j] < t_exit) t_exit = wall_t[j];
+        std::int64_t c = cell_index(i);
+        for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+            const Item& it = items_[members_[k]];
+            const int a = it.axis;
+            Int t = neg(a) ? Int(p[a] - it.lo[a]) : Int(it.lo[a] - p[a]);
+            if (t <= 0 || t_exit < t) continue;
+            if (!shot.escape && shot.t < t) continue;
+            bool inside = true;
+            for (int j = 0; j < M && inside; ++j) {
+                if (j == a) continue;
+                Int x = neg(j) ? Int(p[j] - t) : Int(p[j] + t);
+                inside = !(x < it.lo[j]) && !(it.hi[j] < x);
+            }
+            if (!inside) continue;
+            if (shot.escape || t < shot.t) {
+                shot.escape = false;
+                shot.t = t;
+                shot.flip = 0;
+                shot.absorber = false;
+            }
+            if (it.absorber)
+                shot.absorber = true;
+            else
+                shot.flip |= 1u << a;
+        }
+        if (!shot.escape) return shot;
+        for (int j = 0; j < M; ++j) {
+            if (wall_t[j] != t_exit) continue;
+            i[j] += neg(j) ? -1 : 1;
+            if (i[j] < 0 || i[j] >= n_[j]) return shot; // left the box: nothing more to meet
+            wall_t[j] += h_[j];
+        }
+    }
+}
+
+} // namespace orthoray::lattice
