@@ -17,12 +17,17 @@ void Scene::add(ElementKind kind, int axis, const Rational& offset,
     Element e;
     e.kind = kind;
     e.axis = axis;
+    // GMP compares rationals correctly only in lowest terms.
     e.lo[axis] = e.hi[axis] = offset;
+    e.lo[axis].canonicalize();
+    e.hi[axis].canonicalize();
     std::size_t next = 0;
     for (int j = 0; j < dim; ++j) {
         if (j == axis) continue;
         e.lo[j] = extent[next].first;
         e.hi[j] = extent[next].second;
+        e.lo[j].canonicalize();
+        e.hi[j].canonicalize();
         if (!(e.lo[j] < e.hi[j])) throw std::invalid_argument("Scene::add: empty extent");
         ++next;
     }
