@@ -21,8 +21,12 @@ enum class CycleDetector {
     brent,       // Brent's power-of-two checkpoints (works for any deterministic map)
 };
 
+// Which integers the lattice engine computes with. A narrower type is only
+// ever used where a bound computed from the scene proves it cannot overflow;
+// asking for one the bound rules out gives the next wider type.
 enum class Arithmetic {
-    automatic, // machine integers when a bound proves they cannot overflow, else GMP
+    automatic, // the narrowest safe type: int64, then int128, then GMP
+    int128,    // at least 128-bit machine integers (GMP when they could overflow)
     wide,      // always GMP
 };
 

@@ -113,8 +113,19 @@ Answer run_with_int(const LatticeScene& ls, const SolveOptions& options) {
 
 Answer solve_on_lattice(const Scene& scene, const SolveOptions& options) {
     const LatticeScene ls = lattice::make_lattice(scene);
-    if (options.arithmetic == Arithmetic::automatic && ls.magnitude < lattice::machine_limit())
-        return run_with_int<std::int64_t>(ls, options);
+    // The narrowest type the bound proves safe, unless a wider one is asked for.
+    const bool fits64 = ls.magnitude < lattice::int64_limit();
+    const bool fits128 = ls.magnitude < lattice::int128_limit();
+    switch (options.arithmetic) {
+    case Arithmetic::automatic:
+        if (fits64) return run_with_int<std::int64_t>(ls, options);
+        [[fallthrough]];
+    case Arithmetic::int128:
+        if (fits128) return run_with_int<lattice::int128_t>(ls, options);
+        [[fallthrough]];
+    case Arithmetic::wide:
+        break;
+    }
     return run_with_int<Integer>(ls, options);
 }
 

@@ -3,8 +3,9 @@
 //
 // make_lattice reports the largest |value| B in the scaled scene. Every value
 // the grid and the stepper compute is a sum or difference of at most a few
-// such values plus one cell size (<= 2B + 1), so |intermediate| <= 8B. With
-// B < 2^59 that stays below 2^62 and int64_t is provably safe; otherwise GMP.
+// such values plus one cell size (<= 2B + 1), so |intermediate| <= 8B. Hence
+// int64_t is provably safe for B < 2^59, __int128 for B < 2^123, and GMP
+// integers take everything else.
 #pragma once
 
 #include "orthoray/number.hpp"
@@ -13,8 +14,15 @@
 
 namespace orthoray::lattice {
 
-inline const Integer& machine_limit() {
+__extension__ typedef __int128 int128_t; // GCC/Clang extension, silenced for -Wpedantic
+__extension__ typedef unsigned __int128 uint128_t;
+
+inline const Integer& int64_limit() {
     static const Integer limit = Integer(1) << 59;
+    return limit;
+}
+inline const Integer& int128_limit() {
+    static const Integer limit = Integer(1) << 123;
     return limit;
 }
 
@@ -25,6 +33,15 @@ inline std::int64_t from_integer<std::int64_t>(const Integer& x) {
     return x.get_si();
 }
 template <>
+inline int128_t from_integer<int128_t>(const Integer& x) {
+    // |x| < 2^123: two 64-bit limbs of the magnitude, then the sign.
+    Integer magnitude = abs(x);
+    Integer high = magnitude >> 64;
+    Integer low = magnitude - (high << 64);
+    int128_t r = (static_cast<int128_t>(high.get_ui()) << 64) | low.get_ui();
+    return x < 0 ? -r : r;
+}
+template <>
 inline Integer from_integer<Integer>(const Integer& x) {
     return x;
 }
@@ -32,14 +49,23 @@ inline Integer from_integer<Integer>(const Integer& x) {
 inline Integer to_integer(std::int64_t x) {
     return Integer(static_cast<long>(x));
 }
+inline Integer to_integer(int128_t x) {
+    const bool negative = x < 0;
+    const uint128_t m = negative ? -static_cast<uint128_t>(x) : static_cast<uint128_t>(x);
+    Integer r = Integer(static_cast<unsigned long>(m >> 64));
+    r <<= 64;
+    r += Integer(static_cast<unsigned long>(m & ~std::uint64_t{0}));
+    return negative ? Integer(-r) : r;
+}
 inline const Integer& to_integer(const Integer& x) {
     return x;
 }
 
 // floor(a / b) for b > 0.
-inline std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-    std::int64_t q = a / b;
-    return (a % b != 0 && a < 0) ? q - 1 : q;
+template <class Int>
+Int floor_div(Int a, Int b) {
+    Int q = a / b;
+    return (a % b != 0 && a < 0) ? Int(q - 1) : q;
 }
 inline Integer floor_div(const Integer& a, const Integer& b) {
     Integer q;
@@ -47,8 +73,10 @@ inline Integer floor_div(const Integer& a, const Integer& b) {
     return q;
 }
 
-inline std::int64_t to_index(std::int64_t x) {
-    return x;
+// Cell indices are small (the grid has O(n) cells), whatever Int is.
+template <class Int>
+std::int64_t to_index(Int x) {
+    return static_cast<std::int64_t>(x);
 }
 inline std::int64_t to_index(const Integer& x) {
     return x.get_si();
@@ -56,6 +84,9 @@ inline std::int64_t to_index(const Integer& x) {
 
 inline const char* arithmetic_name(std::int64_t) {
     return "int64";
+}
+inline const char* arithmetic_name(int128_t) {
+    return "int128";
 }
 inline const char* arithmetic_name(const Integer&) {
     return "gmp";
