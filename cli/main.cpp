@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <new>
+#include <string>
 
 int main(int argc, char** argv) {
     using namespace orthoray::cli;
@@ -20,6 +21,13 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "orthoray 0.1.0");
     Command solve = add_solve(app);
     Command verify = add_verify(app);
+    // CLI11 would call an unknown command a missing one; name it instead.
+    if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "solve" &&
+        std::string(argv[1]) != "verify") {
+        std::cerr << "orthoray: found the command '" << argv[1]
+                  << "', expected solve or verify (see 'orthoray --help')\n";
+        return bad_input;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -31,6 +39,9 @@ int main(int argc, char** argv) {
         return app.got_subcommand("solve") ? solve() : verify();
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';
+        return bad_input;
+    } catch (const UsageError& e) {
+        std::cerr << "orthoray: " << e.what() << '\n';
         return bad_input;
     } catch (const std::bad_alloc&) {
         std::cerr << "orthoray: out of memory\n";

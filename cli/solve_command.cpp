@@ -12,6 +12,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace orthoray::cli {
 namespace {
@@ -20,10 +21,22 @@ struct SolveArgs {
     std::string file, certificate;
     bool json = false;
     std::uint64_t max_steps = 0;
-    Engine engine = Engine::lattice;
-    CycleDetector detector = CycleDetector::first_state;
-    Arithmetic arithmetic = Arithmetic::automatic;
+    std::string engine = "lattice", detector = "first-state", arithmetic = "auto";
 };
+
+const std::map<std::string, Engine> engines{
+    {"lattice", Engine::lattice}, {"reference", Engine::reference}, {"graph", Engine::graph}};
+const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetector::first_state},
+                                                     {"brent", CycleDetector::brent}};
+const std::map<std::string, Arithmetic> arithmetics{
+    {"auto", Arithmetic::automatic}, {"int128", Arithmetic::int128}, {"wide", Arithmetic::wide}};
+
+template <class T>
+std::vector<std::string> names(const std::map<std::string, T>& choices) {
+    std::vector<std::string> out;
+    for (const auto& [name, value] : choices) out.push_back(name);
+    return out;
+}
 
 // One JSON object. `reflections` and `period` are written as JSON integers
 // from their decimal text, so they are exact however large.
@@ -52,9 +65,9 @@ void print_text(const Answer& a, double seconds) {
 int run(const SolveArgs& args, const CLI::Option* max_steps) {
     const Scene scene = load_scene(args.file); // bad input ends here, before any output
     SolveOptions options;
-    options.engine = args.engine;
-    options.cycle_detector = args.detector;
-    options.arithmetic = args.arithmetic;
+    options.engine = engines.at(args.engine);
+    options.cycle_detector = detectors.at(args.detector);
+    options.arithmetic = arithmetics.at(args.arithmetic);
     if (max_steps->count() > 0) options.max_steps = args.max_steps;
 
     std::ofstream cert_file;
@@ -62,7 +75,7 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
     if (!args.certificate.empty()) {
         cert_file.open(args.certificate, std::ios::binary | std::ios::trunc);
         if (!cert_file)
-            throw CLI::ValidationError("--certificate", "cannot write '" + args.certificate + "'");
+            throw UsageError("cannot write the certificate file '" + args.certificate + "'");
         writer = std::make_unique<CertificateWriter>(cert_file, scene);
         options.path = writer.get();
     }
@@ -104,26 +117,28 @@ Command add_solve(CLI::App& app) {
     CLI::Option* max_steps =
         cmd->add_option("--max-steps", args->max_steps,
                         "perform at most N reflections; without an answer by then, answer unknown "
-                        "(reason limit) and exit 3");
-    const std::map<std::string, Engine> engines{
-        {"lattice", Engine::lattice}, {"reference", Engine::reference}, {"graph", Engine::graph}};
+                        "(reason limit) and exit 3")
+            ->check(CLI::Validator(
+                [](const std::string& text) {
+                    return text.find_first_not_of("0123456789") == std::string::npos &&
+                                   !text.empty()
+                               ? std::string()
+                               : "found '" + text + "', expected a whole number N >= 0";
+                },
+                "N >= 0"));
     cmd->add_option("--engine", args->engine,
                     "lattice (default: integer lattice states, exact uniform grid), reference "
                     "(naive rational O(n) scan per reflection, the test oracle), graph (explicit "
                     "state graph; small scenes only)")
-        ->transform(CLI::CheckedTransformer(engines, CLI::ignore_case));
-    const std::map<std::string, CycleDetector> detectors{
-        {"first-state", CycleDetector::first_state}, {"brent", CycleDetector::brent}};
+        ->check(CLI::IsMember(names(engines)));
     cmd->add_option("--cycle-detector", args->detector,
                     "first-state (default: compare with the state after reflection 1) or brent "
                     "(Brent's algorithm; needs no injectivity); both O(1) memory")
-        ->transform(CLI::CheckedTransformer(detectors, CLI::ignore_case));
-    const std::map<std::string, Arithmetic> arithmetics{{"auto", Arithmetic::automatic},
-                                                        {"wide", Arithmetic::wide}};
+        ->check(CLI::IsMember(names(detectors)));
     cmd->add_option("--arithmetic", args->arithmetic,
-                    "auto (default: 64-bit integers when a bound proves them safe, else GMP) or "
-                    "wide (always GMP)")
-        ->transform(CLI::CheckedTransformer(arithmetics, CLI::ignore_case));
+                    "auto (default: the narrowest integers a bound proves safe: int64, int128, "
+                    "then GMP), int128 (at least 128-bit), or wide (always GMP)")
+        ->check(CLI::IsMember(names(arithmetics)));
     return [args, max_steps] { return run(*args, max_steps); };
 }
 

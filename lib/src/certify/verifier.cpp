@@ -11,6 +11,7 @@
 #include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <istream>
 #include <optional>
 #include <string>
@@ -38,6 +39,22 @@ struct Token {
 
 // Reads the certificate one statement at a time and produces the InputErrors
 // with the file, line and column of the offending token.
+// A token quoted for a message, with bytes outside printable ASCII written as
+// \xNN so that a damaged certificate cannot put control codes on a terminal.
+std::string printable(std::string_view text) {
+    std::string out = "'";
+    for (unsigned char c : text.substr(0, 60)) {
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02X", c);
+            out += buf;
+        }
+    }
+    return out + (text.size() > 60 ? "...'" : "'");
+}
+
 class Reader {
 public:
     Reader(std::istream& in, const std::string& name) : in_(in), name_(name) {}
@@ -65,7 +82,7 @@ public:
         std::string found;
         int column = 0;
         if (index < tokens_.size()) {
-            found = "'" + std::string(tokens_[index].text) + "'";
+            found = printable(tokens_[index].text);
             column = tokens_[index].column;
         } else {
             found = "end of line";
@@ -359,19 +376,19 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
         expected -= 1;
         break;
     case Reason::cycle: {
+        // The points run at least to the first return to state 1 (a detector
+        // that notices the cycle late, like Brent's, streams a few more; they
+        // were checked as steps like any other). That first return fixes L.
         if (path.points() < 3) return bad("a cycle needs at least two points after point 0");
-        expected -= 1; // L = last - 1
         if (!same(claim.extra, path.p1(), dim) || !same(claim.extra_v, path.v1(), dim))
             return bad("state " + show(claim.extra, dim) + " " + show(claim.extra_v, dim) +
                        " is not state 1 " + show(path.p1(), dim) + " " + show(path.v1(), dim));
+        if (!path.repeat()) return bad("the path never returns to state 1 by " + at_last);
+        expected = to_integer(*path.repeat() - 1);
         if (claim.period != expected)
-            return bad("period " + claim.period.get_str() + ", but " + std::to_string(last + 1) +
-                       " points give period " + expected.get_str());
-        if (!path.repeat()) return bad("the state at " + at_last + " is not state 1");
-        if (*path.repeat() != last)
-            return bad("state " + std::to_string(*path.repeat()) +
-                       " already equals state 1, so the period is " +
-                       std::to_string(*path.repeat() - 1) + ", not " + expected.get_str());
+            return bad("period " + claim.period.get_str() + ", but the path first returns to " +
+                       "state 1 at point " + std::to_string(*path.repeat()) + ": period " +
+                       expected.get_str());
         break;
     }
     case Reason::limit:

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
 #include <vector>
 
 namespace orthoray {
@@ -59,6 +58,7 @@ public:
                 begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
             read_line(line, line_number);
             if (end == std::string_view::npos) {
+                if (!line.empty() && line.back() == '\r') line.remove_suffix(1); // CR, no LF
                 eof_line_ = line_number;
                 eof_column_ = static_cast<int>(line.size()) + 1;
                 break;
@@ -251,9 +251,18 @@ std::string read_file(const std::string& path) {
         throw InputError(path, 1, 1,
                          std::string("found no readable file (") + std::strerror(errno) +
                              "), expected a readable file");
-    std::ostringstream content;
-    content << in.rdbuf();
-    return content.str();
+    // Read in chunks with a cap, so that a device or an endless pipe given by
+    // mistake ends with a message instead of a hang or exhausted memory.
+    constexpr std::size_t cap = std::size_t{256} << 20;
+    std::string content;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+        content.append(buffer, static_cast<std::size_t>(in.gcount()));
+        if (content.size() > cap)
+            throw InputError(path, 1, 1,
+                             "found more than 256 MiB, expected a scene or certificate file");
+    }
+    return content;
 }
 
 Scene load_scene(const std::string& path) {
