@@ -1,5 +1,5 @@
 // Property test: on thousands of seeded random scenes the default engine (on
-// both integer paths and with both cycle detectors), the reference tracer and
+// all three integer paths and with both cycle detectors), the reference tracer and
 // the explicit state graph agree on answer, reason and reflections, and every
 // certificate the default engine writes passes the independent verifier.
 #include "support/random_scene.hpp"
@@ -42,8 +42,9 @@ void check_scene(const Scene& scene, Tally& tally) {
     const Answer lattice = run(scene, Engine::lattice);
     const Answer reference = run(scene, Engine::reference);
     REQUIRE(summary(lattice) == summary(reference));
-    REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state, Arithmetic::wide)) ==
-            summary(lattice));
+    for (Arithmetic wider : {Arithmetic::int128, Arithmetic::wide})
+        REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state, wider)) ==
+                summary(lattice));
 
     // Brent notices a cycle up to about twice as late: give it room, then it
     // must agree wherever the first-state detector decided.

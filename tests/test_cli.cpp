@@ -1,0 +1,447 @@
+// The orthoray command line as a user meets it: exit statuses, one-line
+// errors on stderr and nothing on stdout for bad input, the JSON and text
+// answers, certificates and their verification, and the help texts.
+#include "support/run_cli.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using orthoray::test::CliResult;
+using orthoray::test::run_cli;
+using orthoray::test::source_path;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory for the files one test case writes; removed afterwards.
+class TempDir {
+public:
+    TempDir() {
+        static int counter = 0;
+        path_ = fs::temp_directory_path() / ("orthoray-test-cli-" + std::to_string(::getpid()) +
+                                             "-" + std::to_string(counter++));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    std::string path(const std::string& name) const { return (path_ / name).string(); }
+
+    // Writes `content` byte for byte and returns the file's path.
+    std::string write(const std::string& name, const std::string& content) const {
+        std::ofstream out(path(name), std::ios::binary);
+        out << content;
+        return path(name);
+    }
+
+private:
+    fs::path path_;
+};
+
+std::string quote(const std::string& s) {
+    return "'" + s + "'";
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string instance(const std::string& name) {
+    return source_path("instances/" + name);
+}
+
+const std::string box_corner = "2d/box-corner-3x5.scene";         // yes, hit, 6
+const std::string unit_square = "2d/unit-square-slope-2-3.scene"; // no, cycle, period 10
+
+bool is_one_line(const std::string& s) {
+    return !s.empty() && s.back() == '\n' && std::count(s.begin(), s.end(), '\n') == 1;
+}
+
+bool has_raw_control_bytes(const std::string& s) {
+    for (unsigned char c : s)
+        if ((c < 0x20 && c != '\n') || c >= 0x7f) return true;
+    return false;
+}
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+    return s.rfind(prefix, 0) == 0;
+}
+
+// Bad input: status 2, nothing on stdout, exactly one printable line on stderr.
+void require_bad_input(const CliResult& r) {
+    INFO("stdout: " << r.out);
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(is_one_line(r.err));
+    CHECK_FALSE(has_raw_control_bytes(r.err));
+}
+
+nlohmann::json parse_json(const std::string& out) {
+    INFO("stdout: " << out);
+    REQUIRE(is_one_line(out));
+    nlohmann::json j = nlohmann::json::parse(out); // throws (and fails the test) if not JSON
+    REQUIRE(j.is_object());
+    return j;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- bad input
+
+TEST_CASE("malformed scene files: status 2, no stdout, one FILE:LINE:COL line", "[cli]") {
+    TempDir dir;
+    struct Case {
+        const char* name;
+        std::string text;
+        int line, column;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"no-dim.scene", "mirror x 0 y 0 1\nray 0 0 1 1\ntarget 1 1\n", 1, 1,
+         "found 'mirror', expected 'dim 2' or 'dim 3' as the first statement"},
+        {"empty.scene", "", 1, 1,
+         "found end of file, expected 'dim 2' or 'dim 3' as the first statement"},
+        {"unknown.scene", "dim 2\nprism x 0\n", 2, 1,
+         "found 'prism', expected a statement: dim, mirror, absorber, ray or target"},
+        {"zero-den.scene", "dim 2\nmirror x 1/0 y 0 1\n", 2, 10,
+         "found '1/0', expected the offset x = c with a nonzero denominator"},
+        {"zero-dir.scene", "dim 3\nray 0 0 0 0 0 0\n", 2, 11,
+         "found the direction 0, expected a nonzero direction"},
+        {"two-rays.scene", "dim 2\nray 0 0 1 1\nray 0 0 1 1\n", 3, 1,
+         "found a second 'ray' (the first is on line 2), expected one 'ray' statement"},
+        {"trailing.scene", "dim 2\r\nray 0 0 1 1\r\ntarget 1 1 junk\r\n", 3, 12,
+         "found 'junk', expected end of line"},
+        {"empty-extent.scene", "dim 2\nmirror x 0 y 3 3\n", 2, 16,
+         "found '3' as the upper end of the y extent, expected a number greater than 3"},
+        {"axes.scene", "dim 3\nmirror x 0 z 0 1 y 0 1\n", 2, 12,
+         "found 'z', expected 'y' (the other axes, in the order x, y, z)"},
+        {"nul.scene", std::string("dim 2\nray 0 0\0 1 1\n", 15), 2, 8,
+         "found byte 0x00, expected plain ASCII text"},
+        {"no-target.scene", "dim 2\nray 0 0 1 1\n", 3, 1,
+         "found end of file, expected a 'target' statement"},
+    };
+    for (const Case& c : cases) {
+        const std::string file = dir.write(c.name, c.text);
+        for (const std::string& flags : {std::string(), std::string(" --json")}) {
+            INFO(c.name << flags);
+            const CliResult r = run_cli("solve " + quote(file) + flags);
+            require_bad_input(r);
+            CHECK(r.err == file + ":" + std::to_string(c.line) + ":" + std::to_string(c.column) +
+                               ": " + c.message + "\n");
+        }
+    }
+}
+
+TEST_CASE("binary garbage is bad input, never a crash", "[cli]") {
+    TempDir dir;
+    std::mt19937 rng(7);
+    for (int i = 0; i < 4; ++i) {
+        std::string bytes(static_cast<std::size_t>(200 + 1000 * i), '\0');
+        for (char& c : bytes) c = static_cast<char>(rng() & 0xff);
+        const std::string file = dir.write("garbage" + std::to_string(i) + ".scene", bytes);
+        INFO("garbage file " << i);
+        const CliResult r = run_cli("solve --json " + quote(file));
+        require_bad_input(r);
+        CHECK(starts_with(r.err, file + ":"));
+    }
+}
+
+TEST_CASE("a bad scene writes no certificate", "[cli]") {
+    TempDir dir;
+    const std::string file = dir.write("bad.scene", "dim 2\nray 0 0 1\n");
+    const std::string cert = dir.path("out.cert");
+    const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
+    require_bad_input(r);
+    CHECK(starts_with(r.err, file + ":2:10: "));
+    CHECK_FALSE(fs::exists(cert));
+}
+
+TEST_CASE("a missing file or a directory is bad input", "[cli]") {
+    TempDir dir;
+    const std::string missing = dir.path("no-such.scene");
+    CliResult r = run_cli("solve " + quote(missing));
+    require_bad_input(r);
+    CHECK(starts_with(r.err, missing + ":1:1: "));
+
+    r = run_cli("solve --json " + quote(dir.path("")));
+    require_bad_input(r);
+    CHECK(starts_with(r.err, dir.path("") + ":1:1: found a directory"));
+
+    r = run_cli("verify " + quote(instance(box_corner)) + " " + quote(missing));
+    require_bad_input(r);
+    CHECK(starts_with(r.err, missing + ":1:1: "));
+}
+
+TEST_CASE("usage errors: status 2, no stdout, one line", "[cli]") {
+    const std::string scene = quote(instance(box_corner));
+    for (const std::string& args : {
+             std::string(""),                   // no subcommand
+             std::string("frobnicate"),         // unknown subcommand
+             std::string("solve"),              // missing FILE
+             std::string("solve --json"),       // missing FILE, with a flag
+             "solve " + scene + " --bogus",     // unknown option
+             "solve --frobnicate " + scene,     // unknown option first
+             "solve " + scene + " extra.scene", // one FILE too many
+             "solve " + scene + " --max-steps", // option without its value
+             "solve " + scene + " --max-steps abc", "solve " + scene + " --engine nonsense",
+             std::string("verify ") + scene, // missing CERT
+         }) {
+        INFO("orthoray " << args);
+        const CliResult r = run_cli(args);
+        require_bad_input(r);
+        CHECK(starts_with(r.err, "orthoray: "));
+    }
+}
+
+TEST_CASE("a negative --max-steps is a usage error", "[cli]") {
+    const CliResult r = run_cli("solve " + quote(instance(box_corner)) + " --max-steps -1");
+    require_bad_input(r);
+}
+
+TEST_CASE("an unwritable --certificate path is a usage error", "[cli]") {
+    TempDir dir;
+    const CliResult r = run_cli("solve " + quote(instance(box_corner)) + " --certificate " +
+                                quote(dir.path("no-such-dir/out.cert")));
+    require_bad_input(r);
+    CHECK(r.err == "orthoray: cannot write the certificate file '" +
+                       dir.path("no-such-dir/out.cert") + "'\n");
+}
+
+TEST_CASE("an unknown command is named in the message", "[cli]") {
+    const CliResult r = run_cli("frobnicate");
+    require_bad_input(r);
+    CHECK(r.err == "orthoray: found the command 'frobnicate', expected solve or verify (see "
+                   "'orthoray --help')\n");
+}
+
+// ---------------------------------------------------------------- help
+
+TEST_CASE("help texts exit 0 and show an example", "[cli]") {
+    for (const char* args : {"--help", "-h", "solve --help", "verify --help"}) {
+        INFO("orthoray " << args);
+        const CliResult r = run_cli(args);
+        CHECK(r.status == 0);
+        CHECK(r.err.empty());
+        CHECK(r.out.find("Example") != std::string::npos);
+        CHECK(r.out.find("Exit status") != std::string::npos);
+    }
+    const CliResult top = run_cli("--help");
+    CHECK(top.out.find("orthoray solve ") != std::string::npos);
+    CHECK(top.out.find("orthoray verify ") != std::string::npos);
+
+    const CliResult solve = run_cli("solve --help");
+    for (const char* word : {"orthoray solve ", "--json", "--certificate", "--max-steps", "FILE"})
+        CHECK(solve.out.find(word) != std::string::npos);
+
+    const CliResult verify = run_cli("verify --help");
+    for (const char* word : {"orthoray verify ", "FILE", "CERT"})
+        CHECK(verify.out.find(word) != std::string::npos);
+}
+
+// ---------------------------------------------------------------- answers
+
+TEST_CASE("solve --json on a hit", "[cli]") {
+    const CliResult r = run_cli("solve --json " + quote(instance(box_corner)));
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    const nlohmann::json j = parse_json(r.out);
+    CHECK(j["answer"] == "yes");
+    CHECK(j["reason"] == "hit");
+    REQUIRE(j["reflections"].is_number_integer());
+    CHECK(j["reflections"] == 6);
+    CHECK_FALSE(j.contains("period"));
+    // The option may come after the file too.
+    const CliResult after = run_cli("solve " + quote(instance(box_corner)) + " --json");
+    CHECK(after.status == 0);
+    CHECK(parse_json(after.out)["reflections"] == 6);
+}
+
+TEST_CASE("solve --json on a cycle", "[cli]") {
+    const CliResult r = run_cli("solve --json " + quote(instance(unit_square)));
+    CHECK(r.status == 1);
+    CHECK(r.err.empty());
+    const nlohmann::json j = parse_json(r.out);
+    CHECK(j["answer"] == "no");
+    CHECK(j["reason"] == "cycle");
+    REQUIRE(j["reflections"].is_number_integer());
+    CHECK(j["reflections"] == 10);
+    REQUIRE(j.contains("period"));
+    REQUIRE(j["period"].is_number_integer());
+    CHECK(j["period"] == 10);
+}
+
+TEST_CASE("solve --max-steps stops with status 3 and answer unknown", "[cli]") {
+    const CliResult r = run_cli("solve --json --max-steps 3 " + quote(instance(unit_square)));
+    CHECK(r.status == 3);
+    CHECK(r.err.empty());
+    const nlohmann::json j = parse_json(r.out);
+    CHECK(j["answer"] == "unknown");
+    CHECK(j["reason"] == "limit");
+    REQUIRE(j["reflections"].is_number_integer());
+    CHECK(j["reflections"] == 3);
+    CHECK_FALSE(j.contains("period"));
+
+    // A limit above what the instance needs changes nothing.
+    const CliResult enough = run_cli("solve --json --max-steps 100 " + quote(instance(box_corner)));
+    CHECK(enough.status == 0);
+    CHECK(parse_json(enough.out)["reflections"] == 6);
+
+    // The text output says the same.
+    const CliResult text = run_cli("solve --max-steps 3 " + quote(instance(unit_square)));
+    CHECK(text.status == 3);
+    CHECK(text.out.find("unknown") != std::string::npos);
+    CHECK(text.out.find("limit") != std::string::npos);
+}
+
+TEST_CASE("reflections is written as a JSON integer in full", "[cli]") {
+    // A count above 2^64 is out of reach of a test run, so check the form:
+    // the value after "reflections": is a bare run of decimal digits.
+    for (const std::string& name : {box_corner, unit_square}) {
+        const CliResult r = run_cli("solve --json " + quote(instance(name)));
+        const std::string key = "\"reflections\":";
+        const std::size_t at = r.out.find(key);
+        REQUIRE(at != std::string::npos);
+        std::size_t end = at + key.size();
+        while (end < r.out.size() && r.out[end] >= '0' && r.out[end] <= '9') ++end;
+        CHECK(end > at + key.size());
+        REQUIRE(end < r.out.size());
+        CHECK((r.out[end] == ',' || r.out[end] == '}'));
+        CHECK(parse_json(r.out)["reflections"].is_number_unsigned());
+    }
+}
+
+TEST_CASE("the default output is a short human summary", "[cli]") {
+    const CliResult yes = run_cli("solve " + quote(instance(box_corner)));
+    CHECK(yes.status == 0);
+    CHECK(yes.err.empty());
+    CHECK(yes.out.find("answer") != std::string::npos);
+    CHECK(yes.out.find("yes") != std::string::npos);
+    CHECK(yes.out.find("reason") != std::string::npos);
+    CHECK(yes.out.find("hit") != std::string::npos);
+    CHECK(yes.out.find('6') != std::string::npos);
+    CHECK(yes.out.find('{') == std::string::npos); // not JSON
+    CHECK(std::count(yes.out.begin(), yes.out.end(), '\n') <= 10);
+
+    const CliResult no = run_cli("solve " + quote(instance(unit_square)));
+    CHECK(no.status == 1);
+    CHECK(no.out.find("answer") != std::string::npos);
+    CHECK(no.out.find("no") != std::string::npos);
+    CHECK(no.out.find("reason") != std::string::npos);
+    CHECK(no.out.find("cycle") != std::string::npos);
+    CHECK(no.out.find("10") != std::string::npos);
+}
+
+TEST_CASE("a scene written by hand in a temporary file solves", "[cli]") {
+    TempDir dir;
+    // One mirror straight ahead: the ray comes back through its start and
+    // escapes; the target behind the start is on the way back.
+    const std::string file = dir.write("back.scene", "dim 2\r\n"
+                                                     "mirror x 4 y -1 1\t# wall\r\n"
+                                                     "ray 0 0 1 0\r\n"
+                                                     "target -3 0\r\n");
+    const CliResult r = run_cli("solve --json " + quote(file));
+    CHECK(r.status == 0);
+    const nlohmann::json j = parse_json(r.out);
+    CHECK(j["answer"] == "yes");
+    CHECK(j["reflections"] == 1);
+
+    const std::string away = dir.write("away.scene", "dim 3\nray 0 0 0 1 1 1\ntarget -1 0 0\n");
+    const CliResult e = run_cli("solve --json " + quote(away));
+    CHECK(e.status == 1);
+    const nlohmann::json k = parse_json(e.out);
+    CHECK(k["answer"] == "no");
+    CHECK(k["reason"] == "escape");
+    CHECK(k["reflections"] == 0);
+}
+
+// ---------------------------------------------------------------- certificates
+
+TEST_CASE("solve --certificate then verify says valid", "[cli]") {
+    TempDir dir;
+    for (const std::string& name : {box_corner, unit_square}) {
+        INFO(name);
+        const std::string cert = dir.path("out.cert");
+        const CliResult s =
+            run_cli("solve --json " + quote(instance(name)) + " --certificate " + quote(cert));
+        CHECK((s.status == 0 || s.status == 1));
+        parse_json(s.out); // the certificate does not disturb the JSON on stdout
+        REQUIRE(fs::exists(cert));
+        const CliResult v = run_cli("verify " + quote(instance(name)) + " " + quote(cert));
+        INFO(v.out << v.err);
+        CHECK(v.status == 0);
+        CHECK(starts_with(v.out, "valid"));
+        CHECK(is_one_line(v.out));
+        CHECK(v.err.empty());
+    }
+}
+
+TEST_CASE("a tampered certificate is invalid", "[cli]") {
+    TempDir dir;
+    const std::string cert = dir.path("out.cert");
+    REQUIRE(
+        run_cli("solve " + quote(instance(box_corner)) + " --certificate " + quote(cert)).status ==
+        0);
+    const std::string good = slurp(cert);
+
+    // Move the second reflection point, (1, 5), off the path.
+    const std::string from = "\npoint 1 5\n";
+    const std::size_t at = good.find(from);
+    REQUIRE(at != std::string::npos);
+    std::string bad = good;
+    bad.replace(at, from.size(), "\npoint 1 4\n");
+    const std::string bad_cert = dir.write("bad.cert", bad);
+    const CliResult v = run_cli("verify " + quote(instance(box_corner)) + " " + quote(bad_cert));
+    INFO(v.out << v.err);
+    CHECK(v.status == 1);
+    CHECK(starts_with(v.out, "invalid"));
+    CHECK(is_one_line(v.out));
+
+    // A certificate checked against another scene is invalid too.
+    const CliResult other = run_cli("verify " + quote(instance(unit_square)) + " " + quote(cert));
+    CHECK(other.status == 1);
+    CHECK(starts_with(other.out, "invalid"));
+
+    // A cut-off certificate (no final `end`) never verifies.
+    const std::string cut = dir.write("cut.cert", good.substr(0, good.find("answer")));
+    const CliResult c = run_cli("verify " + quote(instance(box_corner)) + " " + quote(cut));
+    CHECK(c.status == 1);
+    CHECK(starts_with(c.out, "invalid"));
+}
+
+TEST_CASE("a --max-steps certificate is partial and exits 1", "[cli]") {
+    TempDir dir;
+    const std::string cert = dir.path("partial.cert");
+    const CliResult s = run_cli("solve --max-steps 3 " + quote(instance(unit_square)) +
+                                " --certificate " + quote(cert));
+    CHECK(s.status == 3);
+    const CliResult v = run_cli("verify " + quote(instance(unit_square)) + " " + quote(cert));
+    CHECK(v.status == 1);
+    CHECK(v.out.find("partial") != std::string::npos);
+}
+
+TEST_CASE("a malformed certificate is bad input", "[cli]") {
+    TempDir dir;
+    const std::string cert = dir.write("junk.cert", "not a certificate\n");
+    const CliResult v = run_cli("verify " + quote(instance(box_corner)) + " " + quote(cert));
+    require_bad_input(v);
+    CHECK(starts_with(v.err, cert + ":1:1: "));
+}
