@@ -19,8 +19,10 @@ namespace {
 constexpr std::uint64_t step_cap = 4000;
 
 Answer run(const Scene& scene, Engine engine, CycleDetector detector = CycleDetector::first_state,
-           Arithmetic arithmetic = Arithmetic::automatic, std::uint64_t cap = step_cap) {
+           Arithmetic arithmetic = Arithmetic::automatic, std::uint64_t cap = step_cap,
+           Shooter shooter = Shooter::automatic) {
     SolveOptions o;
+    o.shooter = shooter;
     o.engine = engine;
     o.cycle_detector = detector;
     o.arithmetic = arithmetic;
@@ -42,6 +44,9 @@ void check_scene(const Scene& scene, Tally& tally) {
     const Answer lattice = run(scene, Engine::lattice);
     const Answer reference = run(scene, Engine::reference);
     REQUIRE(summary(lattice) == summary(reference));
+    for (Shooter shooter : {Shooter::grid, Shooter::pieces})
+        REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state,
+                            Arithmetic::automatic, step_cap, shooter)) == summary(lattice));
     for (Arithmetic wider : {Arithmetic::int128, Arithmetic::wide})
         REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state, wider)) ==
                 summary(lattice));

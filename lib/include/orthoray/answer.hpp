@@ -17,8 +17,10 @@ struct Answer {
     // escape/absorbed: reflections before it leaves or stops; cycle: the
     // period (reflections in one period); limit: reflections performed.
     Integer reflections;
-    std::string engine;     // which engine decided it ("lattice", "reference", "graph")
-    std::string arithmetic; // integers the lattice engine used ("int64", "gmp"), or "rational"
+    std::string engine; // which engine decided it ("lattice", "reference", "graph")
+    std::string
+        arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
+    std::string shooter; // how the lattice engine found next hits: "grid", "pieces" (2D), or ""
 
     bool yes() const { return reason == Reason::hit; }
     bool decided() const { return reason != Reason::limit; }

@@ -30,6 +30,13 @@ enum class Arithmetic {
     wide,      // always GMP
 };
 
+// How the lattice engine finds the next hit.
+enum class Shooter {
+    automatic, // the grid; in 2D, piece tables once a short run has not answered
+    grid,      // always the uniform grid
+    pieces,    // 2D: piece tables from the start (the grid where there are none)
+};
+
 // Receives the trajectory as it is computed: first the start point, then
 // every reflection point, then (for absorbed) the absorption point, each with
 // the direction the ray leaves it in. Used to stream certificates.
@@ -43,6 +50,7 @@ struct SolveOptions {
     Engine engine = Engine::lattice;
     CycleDetector cycle_detector = CycleDetector::first_state;
     Arithmetic arithmetic = Arithmetic::automatic;
+    Shooter shooter = Shooter::automatic;
     // Stop with Reason::limit rather than perform more than this many reflections.
     std::optional<std::uint64_t> max_steps;
     // Engine::graph refuses (Reason::limit) scenes with more lattice states.

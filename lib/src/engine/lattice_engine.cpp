@@ -1,17 +1,26 @@
 // The lattice stepper. A state is (integer point, direction mask); one step
-// asks the grid for the next hit, checks the target on the segment, and
+// asks a shooter for the next hit, checks the target on the segment, and
 // reflects by flipping the mask bits of the mirrors' normal axes.
+//
+// Shooters: the uniform grid answers any query with no setup beyond its
+// cells; in 2D the piece tables answer one with a binary search but cost a
+// preprocessing pass, so by default a run starts on the grid and switches to
+// the tables only if it has not ended after `grid_phase` reflections.
 #include "engine/lattice_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
 namespace orthoray::engine {
 namespace {
 
 using lattice::LatticeScene;
+
+constexpr std::uint64_t grid_phase = 1u << 14;
+constexpr std::uint32_t no_mirror = ~std::uint32_t{0};
 
 template <class Int, int M>
 struct State {
@@ -39,55 +48,121 @@ bool passes(const Int (&target)[M], const State<Int, M>& s, const lattice::Shot<
 }
 
 template <class Int, int M, class Detector>
-Answer run(const LatticeScene& ls, const SolveOptions& options) {
-    Answer answer;
-    answer.engine = "lattice";
-    answer.arithmetic = lattice::arithmetic_name(Int{});
-    const lattice::UniformGrid<Int, M> grid(ls);
-
-    State<Int, M> s;
-    Int target[M];
-    for (int j = 0; j < M; ++j) {
-        s.p[j] = lattice::from_integer<Int>(ls.start[j]);
-        target[j] = lattice::from_integer<Int>(ls.target[j]);
-    }
-    s.negative = ls.start_direction;
-
-    PathSink* path = options.path;
-    auto report = [&](const State<Int, M>& at) {
-        lattice::Coords c;
-        for (int j = 0; j < M; ++j) c[j] = lattice::to_integer(at.p[j]);
-        path->visit(ls.point(c), ls.direction(at.negative));
-    };
-    auto finish = [&](Reason reason, std::uint64_t reflections) {
-        answer.reason = reason;
-        answer.reflections = Integer(static_cast<unsigned long>(reflections));
-        return answer;
-    };
-
-    if (path) report(s);
-    Detector detector;
-    for (std::uint64_t reflections = 0;;) {
-        const lattice::Shot<Int> shot = grid.shoot(s.p, s.negative);
-        if (ls.target_reachable && passes(target, s, shot)) return finish(Reason::hit, reflections);
-        if (shot.escape) return finish(Reason::escape, reflections);
+class Run {
+public:
+    Run(const LatticeScene& ls, const SolveOptions& options) : ls_(ls), options_(options) {
         for (int j = 0; j < M; ++j) {
-            if ((s.negative >> j) & 1u)
-                s.p[j] -= shot.t;
-            else
-                s.p[j] += shot.t;
+            s_.p[j] = lattice::from_integer<Int>(ls.start[j]);
+            target_[j] = lattice::from_integer<Int>(ls.target[j]);
         }
-        if (shot.absorber) {
-            if (path) report(s);
-            return finish(Reason::absorbed, reflections);
-        }
-        if (options.max_steps && reflections == *options.max_steps)
-            return finish(Reason::limit, reflections);
-        s.negative ^= shot.flip;
-        ++reflections;
-        if (path) report(s);
-        if (auto period = detector.observe(s, reflections)) return finish(Reason::cycle, *period);
+        s_.negative = ls.start_direction;
+        answer_.engine = "lattice";
+        answer_.arithmetic = lattice::arithmetic_name(Int{});
+        if (options_.path) report();
     }
+
+    // Steps with `shoot(state, mirror)` until an answer, or until `until`
+    // reflections have been performed (then returns false).
+    template <class Shoot>
+    bool advance(Shoot&& shoot, std::uint64_t until) {
+        while (true) {
+            const lattice::Shot<Int> shot = shoot(s_, mirror_);
+            if (ls_.target_reachable && passes(target_, s_, shot)) return finish(Reason::hit);
+            if (shot.escape) return finish(Reason::escape);
+            for (int j = 0; j < M; ++j) {
+                if ((s_.negative >> j) & 1u)
+                    s_.p[j] -= shot.t;
+                else
+                    s_.p[j] += shot.t;
+            }
+            if (shot.absorber) {
+                if (options_.path) report();
+                return finish(Reason::absorbed);
+            }
+            if (options_.max_steps && reflections_ == *options_.max_steps)
+                return finish(Reason::limit);
+            if (reflections_ == until) {
+                for (int j = 0; j < M; ++j) { // not taken yet: undo the move
+                    if ((s_.negative >> j) & 1u)
+                        s_.p[j] += shot.t;
+                    else
+                        s_.p[j] -= shot.t;
+                }
+                return false;
+            }
+            s_.negative ^= shot.flip;
+            mirror_ = shot.mirror;
+            ++reflections_;
+            if (options_.path) report();
+            if (auto period = detector_.observe(s_, reflections_)) {
+                reflections_ = *period;
+                return finish(Reason::cycle);
+            }
+        }
+    }
+
+    std::uint64_t reflections() const { return reflections_; }
+    Answer& answer() { return answer_; }
+
+private:
+    const LatticeScene& ls_;
+    const SolveOptions& options_;
+    State<Int, M> s_;
+    Int target_[M];
+    std::uint32_t mirror_ = no_mirror; // a mirror the current point lies on, once reflected
+    std::uint64_t reflections_ = 0;
+    Detector detector_;
+    Answer answer_;
+
+    void report() {
+        lattice::Coords c;
+        for (int j = 0; j < M; ++j) c[j] = lattice::to_integer(s_.p[j]);
+        options_.path->visit(ls_.point(c), ls_.direction(s_.negative));
+    }
+
+    bool finish(Reason reason) {
+        answer_.reason = reason;
+        answer_.reflections = Integer(static_cast<unsigned long>(reflections_));
+        return true;
+    }
+};
+
+template <class Int, int M, class Detector>
+Answer run(const LatticeScene& ls, const SolveOptions& options) {
+    const lattice::UniformGrid<Int, M> grid(ls);
+    Run<Int, M, Detector> run(ls, options);
+    auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
+        return grid.shoot(s.p, s.negative);
+    };
+    constexpr std::uint64_t unlimited = ~std::uint64_t{0};
+
+    if constexpr (M == 2) {
+        if (options.shooter != Shooter::grid) {
+            const std::uint64_t first = options.shooter == Shooter::pieces ? 0 : grid_phase;
+            if (!run.advance(by_grid, first)) {
+                // Piece tables may grow quadratic with crossings: past 64 pieces
+                // a mirror on average, stay on the grid.
+                const auto table =
+                    lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+                if (table) {
+                    run.answer().shooter = "pieces";
+                    run.advance(
+                        [&](const State<Int, M>& s, std::uint32_t mirror) {
+                            return mirror == no_mirror ? grid.shoot(s.p, s.negative)
+                                                       : table->shoot(s.p, s.negative, mirror);
+                        },
+                        unlimited);
+                    return run.answer();
+                }
+            } else {
+                run.answer().shooter = "grid";
+                return run.answer();
+            }
+        }
+    }
+    run.answer().shooter = "grid";
+    run.advance(by_grid, unlimited);
+    return run.answer();
 }
 
 template <class Int, int M>

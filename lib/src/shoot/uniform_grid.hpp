@@ -29,6 +29,8 @@ struct Shot {
     bool absorber = false;
     unsigned flip = 0;
     Int t{};
+    std::uint32_t mirror = 0; // one of the mirrors met (when flip != 0): index in the scene
+    unsigned met = 0;         // normal axes of every element met, absorbers included
 };
 
 template <class Int, int M>
@@ -41,6 +43,18 @@ public:
 
     std::size_t cell_count() const { return offsets_.size() - 1; }
 
+    // Calls visit(index) for every element whose closed box contains p (an
+    // element may be visited more than once).
+    template <class Visit>
+    void for_each_element_at(const Int (&p)[M], Visit&& visit) const;
+
+    // Calls visit(index) for every element registered in a cell that element
+    // `e` is registered in: a superset of the elements whose boxes meet e's.
+    template <class Visit>
+    void for_each_neighbour(std::uint32_t e, Visit&& visit) const;
+
+    std::size_t size() const { return items_.size(); }
+
 private:
     struct Item {
         Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
@@ -52,6 +66,30 @@ private:
     std::int64_t n_[M]{};                // cells per axis
     std::vector<std::uint32_t> offsets_; // CSR: cell -> [offsets_[c], offsets_[c+1]) in members_
     std::vector<std::uint32_t> members_;
+
+    // Cells i along axis j whose closed box [lo + i h, lo + (i+1) h] meets
+    // [a, b]: floor((a - lo - 1) / h) <= i <= floor((b - lo) / h), clamped.
+    void cell_range(const Item& it, int j, std::int64_t& first, std::int64_t& last) const {
+        first = std::max<std::int64_t>(0, to_index(floor_div(Int(it.lo[j] - lo_[j] - 1), h_[j])));
+        last =
+            std::min<std::int64_t>(n_[j] - 1, to_index(floor_div(Int(it.hi[j] - lo_[j]), h_[j])));
+    }
+
+    template <class Visit>
+    void for_each_cell(const Item& it, Visit&& visit) const {
+        std::int64_t first[M], last[M], i[M];
+        for (int j = 0; j < M; ++j) {
+            cell_range(it, j, first[j], last[j]);
+            i[j] = first[j];
+        }
+        while (true) {
+            visit(cell_index(i));
+            int j = 0;
+            while (j < M && i[j] == last[j]) i[j] = first[j], ++j;
+            if (j == M) break;
+            ++i[j];
+        }
+    }
 
     std::int64_t cell_index(const std::int64_t (&i)[M]) const {
         std::int64_t c = 0;
@@ -101,26 +139,6 @@ UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene) {
         n_[j] = to_index(floor_div(points + h_[j] - 1, h_[j]));
         total *= n_[j];
     }
-    // Cells i along axis j whose closed box [lo + i h, lo + (i+1) h] meets
-    // [a, b]: floor((a - lo - 1) / h) <= i <= floor((b - lo) / h), clamped.
-    auto range = [&](const Item& it, int j, std::int64_t& first, std::int64_t& last) {
-        first = std::max<std::int64_t>(0, to_index(floor_div(it.lo[j] - lo_[j] - 1, h_[j])));
-        last = std::min<std::int64_t>(n_[j] - 1, to_index(floor_div(it.hi[j] - lo_[j], h_[j])));
-    };
-    auto for_each_cell = [&](const Item& it, auto&& visit) {
-        std::int64_t first[M], last[M], i[M];
-        for (int j = 0; j < M; ++j) {
-            range(it, j, first[j], last[j]);
-            i[j] = first[j];
-        }
-        while (true) {
-            visit(cell_index(i));
-            int j = 0;
-            while (j < M && i[j] == last[j]) i[j] = first[j], ++j;
-            if (j == M) break;
-            ++i[j];
-        }
-    };
     offsets_.assign(static_cast<std::size_t>(total) + 1, 0);
     for (const Item& it : items_) for_each_cell(it, [&](std::int64_t c) { ++offsets_[c + 1]; });
     for (std::size_t c = 1; c < offsets_.size(); ++c) offsets_[c] += offsets_[c - 1];
@@ -128,6 +146,34 @@ UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene) {
     std::vector<std::uint32_t> fill(offsets_.begin(), offsets_.end() - 1);
     for (std::uint32_t e = 0; e < items_.size(); ++e)
         for_each_cell(items_[e], [&](std::int64_t c) { members_[fill[c]++] = e; });
+}
+
+template <class Int, int M>
+template <class Visit>
+void UniformGrid<Int, M>::for_each_element_at(const Int (&p)[M], Visit&& visit) const {
+    if (items_.empty()) return;
+    std::int64_t i[M];
+    for (int j = 0; j < M; ++j) {
+        if (p[j] < lo_[j] || hi_[j] < p[j]) return;
+        i[j] = std::min<std::int64_t>(n_[j] - 1, to_index(floor_div(Int(p[j] - lo_[j]), h_[j])));
+    }
+    // Every element containing p is registered in every cell whose closed box
+    // contains p, so one such cell holds them all.
+    const std::int64_t c = cell_index(i);
+    for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+        const Item& it = items_[members_[k]];
+        bool inside = true;
+        for (int j = 0; j < M && inside; ++j) inside = !(p[j] < it.lo[j]) && !(it.hi[j] < p[j]);
+        if (inside) visit(members_[k]);
+    }
+}
+
+template <class Int, int M>
+template <class Visit>
+void UniformGrid<Int, M>::for_each_neighbour(std::uint32_t e, Visit&& visit) const {
+    for_each_cell(items_[e], [&](std::int64_t c) {
+        for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) visit(members_[k]);
+    });
 }
 
 template <class Int, int M>
@@ -181,12 +227,16 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
                 shot.escape = false;
                 shot.t = t;
                 shot.flip = 0;
+                shot.met = 0;
                 shot.absorber = false;
             }
-            if (it.absorber)
+            shot.met |= 1u << a;
+            if (it.absorber) {
                 shot.absorber = true;
-            else
+            } else {
                 shot.flip |= 1u << a;
+                shot.mirror = members_[k];
+            }
         }
         if (!shot.escape) return shot;
         for (int j = 0; j < M; ++j) {

@@ -1,0 +1,242 @@
+// 2D piece tables: the first-return map of the ray on the mirrors, as an
+// interval exchange.
+//
+// In lattice coordinates (lattice_scene.hpp) the ray is diagonal. Fix one of
+// the four directions d = (sx, sy) in {±1}^2 and a mirror A; a state on A is
+// its position u (y on a vertical mirror, x on a horizontal one). As u runs
+// along A, the line the ray follows shifts, and the next element met only
+// changes where that line passes an *event*: an element's endpoint or the
+// crossing of two elements. Between two such u the next hit is one element B
+// at a parameter t that is affine in u, t(u) = t0 + slope * (u - u0) with
+// slope in {-1, 0, 1}, and the point reached moves along B by a translation
+// (with a flip when A and B are perpendicular). So the map "position on A ->
+// (next mirror, position there)" is piecewise a translation: over all
+// (A, d) it is an interval exchange with flips, and with holes where the ray
+// escapes or is absorbed. A reflection is then one binary search in A's few
+// pieces plus a few additions.
+//
+// Building. The breakpoints of (A, d) are (1) the positions on A of every
+// event lying on A (its ends, crossings on it) and (2) the positions on A
+// from which the ray in direction d reaches an event first: found by shooting
+// from each event in the reverse direction with the exact grid. Every other u
+// has an open neighbourhood with the same next element, flip and affine t,
+// since the first element above A along the lines can only change at a vertex
+// of that lower envelope, and those vertices are visible events. Each piece
+// (a breakpoint itself, or an open run between two) is resolved with one
+// forward grid shot; adjacent pieces with the same map are merged.
+#pragma once
+
+#include "shoot/uniform_grid.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <vector>
+
+namespace orthoray::lattice {
+
+template <class Int>
+class PieceTable {
+public:
+    enum class Kind : std::uint8_t { reflect, escape, absorb };
+
+    struct Piece {
+        Int from;          // first position on the mirror this piece covers
+        Int t0;            // the next hit's parameter at u = from
+        std::int8_t slope; // t(u) = t0 + slope * (u - from)
+        std::uint8_t flip; // normal axes of the mirrors met there
+        Kind kind;
+        std::uint32_t next; // a mirror met there (kind == reflect)
+    };
+
+    // std::nullopt when the tables would need more than max_pieces pieces
+    // (many crossings can make them quadratic in the number of mirrors).
+    static std::optional<PieceTable> build(const LatticeScene& scene,
+                                           const UniformGrid<Int, 2>& grid, std::size_t max_pieces);
+
+    // The pieces of mirror `element` for leaving it in direction `negative`
+    // (bit i set: moving towards -infinity on axis i), sorted by `from`.
+    std::span<const Piece> pieces(std::uint32_t element, unsigned negative) const {
+        return {pieces_.data() + offsets_[element * 4 + negative],
+                pieces_.data() + offsets_[element * 4 + negative + 1]};
+    }
+
+    // The next hit from point p on mirror `element`, as the grid would give it.
+    Shot<Int> shoot(const Int (&p)[2], unsigned negative, std::uint32_t element) const {
+        const std::span<const Piece> range = pieces(element, negative);
+        const Int& u = p[tangent_[element]];
+        auto it = std::upper_bound(range.begin(), range.end(), u,
+                                   [](const Int& x, const Piece& piece) { return x < piece.from; });
+        const Piece& piece = *(it - 1);
+        Shot<Int> shot;
+        shot.escape = piece.kind == Kind::escape;
+        shot.absorber = piece.kind == Kind::absorb;
+        shot.flip = piece.flip;
+        shot.mirror = piece.next;
+        shot.t = piece.t0 + Int(piece.slope) * Int(u - piece.from);
+        return shot;
+    }
+
+    std::size_t size() const { return pieces_.size(); }
+
+    // One line a piece: mirror, direction, first position, and where it goes.
+    void dump(std::ostream& out) const;
+
+private:
+    std::vector<Piece> pieces_;
+    std::vector<std::uint32_t> offsets_; // (element * 4 + direction) -> first piece
+    std::vector<std::uint8_t> tangent_;  // the axis a position on the element runs along
+};
+
+template <class Int>
+std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
+                                                      const UniformGrid<Int, 2>& grid,
+                                                      std::size_t max_pieces) {
+    const auto& elements = scene.elements;
+    const std::uint32_t n = static_cast<std::uint32_t>(elements.size());
+    struct Box {
+        Int lo[2], hi[2];
+        int axis;
+        bool absorber;
+    };
+    std::vector<Box> box(n);
+    for (std::uint32_t e = 0; e < n; ++e) {
+        for (int j = 0; j < 2; ++j) {
+            box[e].lo[j] = from_integer<Int>(elements[e].lo[j]);
+            box[e].hi[j] = from_integer<Int>(elements[e].hi[j]);
+        }
+        box[e].axis = elements[e].axis;
+        box[e].absorber = elements[e].absorber;
+    }
+
+    // Events: every element's two ends, and every crossing of a vertical and
+    // a horizontal element (T-junctions and corners included).
+    using Point = std::array<Int, 2>;
+    std::vector<Point> events;
+    for (const Box& b : box) {
+        const int t = 1 - b.axis;
+        Point p{b.lo[0], b.lo[1]};
+        events.push_back(p);
+        p[t] = b.hi[t];
+        events.push_back(p);
+    }
+    for (std::uint32_t e = 0; e < n; ++e) {
+        if (box[e].axis != 0) continue;
+        grid.for_each_neighbour(e, [&](std::uint32_t f) {
+            const Box &v = box[e], &h = box[f];
+            if (h.axis != 1) return;
+            if (h.lo[0] <= v.lo[0] && v.lo[0] <= h.hi[0] && v.lo[1] <= h.lo[1] &&
+                h.lo[1] <= v.hi[1])
+                events.push_back(Point{v.lo[0], h.lo[1]});
+        });
+    }
+    std::sort(events.begin(), events.end());
+    events.erase(std::unique(events.begin(), events.end()), events.end());
+
+    PieceTable table;
+    table.tangent_.resize(n);
+    for (std::uint32_t e = 0; e < n; ++e)
+        table.tangent_[e] = static_cast<std::uint8_t>(1 - box[e].axis);
+
+    // Breakpoints per (mirror, direction).
+    std::vector<std::vector<Int>> breaks(std::size_t{n} * 4);
+    std::size_t total = 0;
+    auto add_break_at = [&](const Int(&p)[2], unsigned d) {
+        grid.for_each_element_at(p, [&](std::uint32_t m) {
+            if (box[m].absorber) return;
+            breaks[m * 4 + d].push_back(p[table.tangent_[m]]);
+            ++total;
+        });
+    };
+    for (std::uint32_t m = 0; m < n; ++m)
+        for (unsigned d = 0; d < 4; ++d) {
+            const int t = table.tangent_[m];
+            breaks[m * 4 + d] = {box[m].lo[t], box[m].hi[t]};
+        }
+    for (const Point& event : events) {
+        const Int p[2] = {event[0], event[1]};
+        for (unsigned d = 0; d < 4; ++d) {
+            add_break_at(p, d);
+            const Shot<Int> back = grid.shoot(p, d ^ 3u);
+            if (back.escape) continue;
+            const Int q[2] = {(d & 1u) ? Int(p[0] + back.t) : Int(p[0] - back.t),
+                              (d & 2u) ? Int(p[1] + back.t) : Int(p[1] - back.t)};
+            add_break_at(q, d);
+        }
+        if (2 * total > max_pieces) return std::nullopt;
+    }
+
+    // Resolve each piece with one forward shot, merging runs with one map.
+    table.offsets_.assign(std::size_t{n} * 4 + 1, 0);
+    for (std::uint32_t m = 0; m < n; ++m) {
+        for (unsigned d = 0; d < 4; ++d) {
+            table.offsets_[m * 4 + d] = static_cast<std::uint32_t>(table.pieces_.size());
+            if (box[m].absorber) continue;
+            std::vector<Int>& b = breaks[m * 4 + d];
+            std::sort(b.begin(), b.end());
+            b.erase(std::unique(b.begin(), b.end()), b.end());
+            const int tangent = table.tangent_[m];
+            const std::size_t first = table.pieces_.size();
+            auto resolve = [&](const Int& u) {
+                Int p[2] = {box[m].lo[0], box[m].lo[1]};
+                p[tangent] = u;
+                const Shot<Int> s = grid.shoot(p, d);
+                Piece piece{u,
+                            s.t,
+                            0,
+                            static_cast<std::uint8_t>(s.flip),
+                            s.escape     ? Kind::escape
+                            : s.absorber ? Kind::absorb
+                                         : Kind::reflect,
+                            s.mirror};
+                // Moving u along A moves the hit along B; t changes only when
+                // B is perpendicular to A (B's normal is A's tangent axis).
+                if (!s.escape && s.met == (1u << tangent)) {
+                    const bool neg = (d >> tangent) & 1u;
+                    piece.slope = neg ? 1 : -1;
+                }
+                if (table.pieces_.size() > first) {
+                    const Piece& last = table.pieces_.back();
+                    const bool same_map =
+                        last.kind == piece.kind && last.flip == piece.flip &&
+                        last.next == piece.next && last.slope == piece.slope &&
+                        (piece.kind == Kind::escape ||
+                         last.t0 + Int(last.slope) * Int(u - last.from) == piece.t0);
+                    if (same_map) return;
+                }
+                table.pieces_.push_back(piece);
+            };
+            for (std::size_t i = 0; i < b.size(); ++i) {
+                resolve(b[i]);
+                if (i + 1 < b.size() && Int(b[i] + 1) < b[i + 1]) resolve(Int(b[i] + 1));
+            }
+            if (table.pieces_.size() > max_pieces) return std::nullopt;
+        }
+    }
+    table.offsets_[std::size_t{n} * 4] = static_cast<std::uint32_t>(table.pieces_.size());
+    return table;
+}
+
+template <class Int>
+void PieceTable<Int>::dump(std::ostream& out) const {
+    static const char* const direction[] = {"+x+y", "-x+y", "+x-y", "-x-y"};
+    for (std::uint32_t m = 0; m < tangent_.size(); ++m)
+        for (unsigned d = 0; d < 4; ++d)
+            for (const Piece& p : pieces(m, d)) {
+                out << "mirror " << m << ' ' << direction[d] << " from " << to_integer(p.from)
+                    << ": ";
+                if (p.kind == Kind::escape) {
+                    out << "escape\n";
+                    continue;
+                }
+                out << (p.kind == Kind::absorb ? "absorbed" : "mirror " + std::to_string(p.next))
+                    << " at t = " << to_integer(p.t0);
+                if (p.slope != 0) out << (p.slope > 0 ? " + (u - from)" : " - (u - from)");
+                if (p.kind == Kind::reflect)
+                    out << ", flip " << ((p.flip & 1u) ? "x" : "") << ((p.flip & 2u) ? "y" : "");
+                out << '\n';
+            }
+}
+
+} // namespace orthoray::lattice
