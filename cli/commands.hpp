@@ -22,5 +22,6 @@ struct UsageError : std::runtime_error {
 
 Command add_solve(CLI::App& app);
 Command add_verify(CLI::App& app);
+Command add_pieces(CLI::App& app);
 
 } // namespace orthoray::cli

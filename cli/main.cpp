@@ -21,11 +21,16 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "orthoray 0.1.0");
     Command solve = add_solve(app);
     Command verify = add_verify(app);
+    Command pieces = add_pieces(app);
     // CLI11 would call an unknown command a missing one; name it instead.
-    if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "solve" &&
-        std::string(argv[1]) != "verify") {
+    auto is_command = [&](const char* word) {
+        for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+            if (sub->get_name() == word) return true;
+        return false;
+    };
+    if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
         std::cerr << "orthoray: found the command '" << argv[1]
-                  << "', expected solve or verify (see 'orthoray --help')\n";
+                  << "', expected solve, verify or pieces (see 'orthoray --help')\n";
         return bad_input;
     }
     try {
@@ -36,7 +41,8 @@ int main(int argc, char** argv) {
         return bad_input;
     }
     try {
-        return app.got_subcommand("solve") ? solve() : verify();
+        if (app.got_subcommand("solve")) return solve();
+        return app.got_subcommand("verify") ? verify() : pieces();
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';
         return bad_input;

@@ -21,7 +21,7 @@ struct SolveArgs {
     std::string file, certificate;
     bool json = false;
     std::uint64_t max_steps = 0;
-    std::string engine = "lattice", detector = "first-state", arithmetic = "auto";
+    std::string engine = "lattice", detector = "first-state", arithmetic = "auto", shooter = "auto";
 };
 
 const std::map<std::string, Engine> engines{
@@ -30,6 +30,9 @@ const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetect
                                                      {"brent", CycleDetector::brent}};
 const std::map<std::string, Arithmetic> arithmetics{
     {"auto", Arithmetic::automatic}, {"int128", Arithmetic::int128}, {"wide", Arithmetic::wide}};
+
+const std::map<std::string, Shooter> shooters{
+    {"auto", Shooter::automatic}, {"grid", Shooter::grid}, {"pieces", Shooter::pieces}};
 
 template <class T>
 std::vector<std::string> names(const std::map<std::string, T>& choices) {
@@ -48,8 +51,12 @@ void print_json(const Answer& a, double seconds) {
     std::cout << ",\"reflections\":" << reflections;
     if (a.reason == Reason::cycle) std::cout << ",\"period\":" << reflections;
     std::cout << ",\"engine\":" << nlohmann::json(a.engine).dump()
-              << ",\"arithmetic\":" << nlohmann::json(a.arithmetic).dump()
-              << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
+              << ",\"arithmetic\":" << nlohmann::json(a.arithmetic).dump();
+    if (!a.shooter.empty())
+        std::cout << ",\"shooter\":" << nlohmann::json(a.shooter).dump()
+                  << ",\"setup_seconds\":" << nlohmann::json(a.setup.seconds).dump()
+                  << ",\"grid_cells\":" << a.setup.cells << ",\"pieces\":" << a.setup.pieces;
+    std::cout << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
 }
 
 void print_text(const Answer& a, double seconds) {
@@ -58,7 +65,8 @@ void print_text(const Answer& a, double seconds) {
                 a.reason == Reason::limit ? " (--max-steps reached)" : "");
     std::printf("%-12s %s\n", a.reason == Reason::cycle ? "period" : "reflections",
                 a.reflections.get_str().c_str());
-    std::printf("engine       %s (%s)\n", a.engine.c_str(), a.arithmetic.c_str());
+    std::printf("engine       %s (%s%s%s)\n", a.engine.c_str(), a.arithmetic.c_str(),
+                a.shooter.empty() ? "" : ", ", a.shooter.c_str());
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
@@ -68,6 +76,7 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
     options.engine = engines.at(args.engine);
     options.cycle_detector = detectors.at(args.detector);
     options.arithmetic = arithmetics.at(args.arithmetic);
+    options.shooter = shooters.at(args.shooter);
     if (max_steps->count() > 0) options.max_steps = args.max_steps;
 
     std::ofstream cert_file;
@@ -139,6 +148,11 @@ Command add_solve(CLI::App& app) {
                     "auto (default: the narrowest integers a bound proves safe: int64, int128, "
                     "then GMP), int128 (at least 128-bit), or wide (always GMP)")
         ->check(CLI::IsMember(names(arithmetics)));
+    cmd->add_option("--shooter", args->shooter,
+                    "how the lattice engine finds the next hit: auto (default: the uniform grid; "
+                    "in 2D, piece tables once 16384 reflections have not answered), grid, or "
+                    "pieces (2D piece tables from the start)")
+        ->check(CLI::IsMember(names(shooters)));
     return [args, max_steps] { return run(*args, max_steps); };
 }
 

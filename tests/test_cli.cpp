@@ -229,8 +229,9 @@ TEST_CASE("an unwritable --certificate path is a usage error", "[cli]") {
 TEST_CASE("an unknown command is named in the message", "[cli]") {
     const CliResult r = run_cli("frobnicate");
     require_bad_input(r);
-    CHECK(r.err == "orthoray: found the command 'frobnicate', expected solve or verify (see "
-                   "'orthoray --help')\n");
+    CHECK(r.err ==
+          "orthoray: found the command 'frobnicate', expected solve, verify or pieces (see "
+          "'orthoray --help')\n");
 }
 
 // ---------------------------------------------------------------- help
@@ -444,4 +445,16 @@ TEST_CASE("a malformed certificate is bad input", "[cli]") {
     const CliResult v = run_cli("verify " + quote(instance(box_corner)) + " " + quote(cert));
     require_bad_input(v);
     CHECK(starts_with(v.err, cert + ":1:1: "));
+}
+
+TEST_CASE("pieces prints the 2D piece tables and refuses other scenes", "[cli][pieces]") {
+    const CliResult r = run_cli("pieces " + quote(instance(box_corner)));
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    // From (0, 2) on the left wall, moving up and right, the ray reaches the
+    // corner (3, 5) at t = 3 and flips both components.
+    CHECK(r.out.find("element 0 +x+y from 2: element 3 at t = 3, flip xy\n") != std::string::npos);
+    const CliResult r3 =
+        run_cli("pieces " + quote(source_path("instances/3d/box-corner-1x2x3.scene")));
+    require_bad_input(r3);
 }

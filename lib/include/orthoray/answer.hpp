@@ -3,6 +3,7 @@
 
 #include "orthoray/number.hpp"
 
+#include <cstddef>
 #include <string>
 
 namespace orthoray {
@@ -21,6 +22,13 @@ struct Answer {
     std::string
         arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
     std::string shooter; // how the lattice engine found next hits: "grid", "pieces" (2D), or ""
+
+    // What the lattice engine built before or while stepping.
+    struct Setup {
+        double seconds = 0;     // time spent building the grid and piece tables
+        std::size_t cells = 0;  // uniform grid cells
+        std::size_t pieces = 0; // piece-table pieces (0 when none were built)
+    } setup;
 
     bool yes() const { return reason == Reason::hit; }
     bool decided() const { return reason != Reason::limit; }

@@ -14,6 +14,8 @@
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
+#include <chrono>
+
 namespace orthoray::engine {
 namespace {
 
@@ -127,10 +129,18 @@ private:
     }
 };
 
+double seconds_since(std::chrono::steady_clock::time_point begin) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
 template <class Int, int M, class Detector>
 Answer run(const LatticeScene& ls, const SolveOptions& options) {
+    auto begin = std::chrono::steady_clock::now();
     const lattice::UniformGrid<Int, M> grid(ls);
     Run<Int, M, Detector> run(ls, options);
+    Answer::Setup& setup = run.answer().setup;
+    setup.seconds = seconds_since(begin);
+    setup.cells = grid.cell_count();
     auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
         return grid.shoot(s.p, s.negative);
     };
@@ -142,9 +152,12 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
             if (!run.advance(by_grid, first)) {
                 // Piece tables may grow quadratic with crossings: past 64 pieces
                 // a mirror on average, stay on the grid.
+                begin = std::chrono::steady_clock::now();
                 const auto table =
                     lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+                setup.seconds += seconds_since(begin);
                 if (table) {
+                    setup.pieces = table->size();
                     run.answer().shooter = "pieces";
                     run.advance(
                         [&](const State<Int, M>& s, std::uint32_t mirror) {

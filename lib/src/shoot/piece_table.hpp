@@ -224,13 +224,13 @@ void PieceTable<Int>::dump(std::ostream& out) const {
     for (std::uint32_t m = 0; m < tangent_.size(); ++m)
         for (unsigned d = 0; d < 4; ++d)
             for (const Piece& p : pieces(m, d)) {
-                out << "mirror " << m << ' ' << direction[d] << " from " << to_integer(p.from)
+                out << "element " << m << ' ' << direction[d] << " from " << to_integer(p.from)
                     << ": ";
                 if (p.kind == Kind::escape) {
                     out << "escape\n";
                     continue;
                 }
-                out << (p.kind == Kind::absorb ? "absorbed" : "mirror " + std::to_string(p.next))
+                out << (p.kind == Kind::absorb ? "absorbed" : "element " + std::to_string(p.next))
                     << " at t = " << to_integer(p.t0);
                 if (p.slope != 0) out << (p.slope > 0 ? " + (u - from)" : " - (u - from)");
                 if (p.kind == Kind::reflect)

@@ -1,0 +1,34 @@
+// orthoray pieces FILE: print the 2D piece tables the engine steps through.
+#include "commands.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/pieces.hpp"
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace orthoray::cli {
+
+Command add_pieces(CLI::App& app) {
+    auto file = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand(
+        "pieces", "Print the 2D piece tables: for each mirror and each of the four diagonal\n"
+                  "directions, the runs of positions that reach the same next mirror by the\n"
+                  "same translation (the interval exchange of docs/piece-tables.md).\n"
+                  "Coordinates are the scene's lattice coordinates (docs/lattice.md).\n\n"
+                  "Example:\n"
+                  "  orthoray pieces instances/2d/box-corner-3x5.scene");
+    cmd->add_option("FILE", *file, "a 2D .scene file whose ray moves in both x and y")->required();
+    return [file] {
+        const Scene scene = load_scene(*file);
+        std::ostringstream out; // nothing reaches stdout unless the tables exist
+        if (!write_piece_tables(scene, out).available)
+            throw UsageError("piece tables exist only for 2D scenes whose ray moves in both x and "
+                             "y; '" +
+                             *file + "' is not one");
+        std::cout << out.str();
+        return static_cast<int>(yes);
+    };
+}
+
+} // namespace orthoray::cli
