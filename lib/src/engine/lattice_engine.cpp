@@ -35,17 +35,21 @@ struct State {
     }
 };
 
+// +1 or -1 for axis j of a direction mask: multiplying by it instead of
+// branching on the mask keeps the hot loop free of unpredictable jumps.
+template <class Int>
+Int sign(unsigned negative, int j) {
+    return Int(1 - 2 * static_cast<int>((negative >> j) & 1u));
+}
+
 // Whether `target` lies on the closed segment p .. p + t*sigma (or on the
 // whole ray when the shot escapes): target - p = tau * sigma, 0 <= tau <= t.
 template <class Int, int M>
 bool passes(const Int (&target)[M], const State<Int, M>& s, const lattice::Shot<Int>& shot) {
-    auto signed_gap = [&](int j) {
-        return (s.negative >> j) & 1u ? Int(s.p[j] - target[j]) : Int(target[j] - s.p[j]);
-    };
-    Int tau = signed_gap(0);
+    const Int tau = sign<Int>(s.negative, 0) * Int(target[0] - s.p[0]);
     if (tau < 0 || (!shot.escape && shot.t < tau)) return false;
     for (int j = 1; j < M; ++j)
-        if (signed_gap(j) != tau) return false;
+        if (sign<Int>(s.negative, j) * Int(target[j] - s.p[j]) != tau) return false;
     return true;
 }
 
@@ -71,12 +75,7 @@ public:
             const lattice::Shot<Int> shot = shoot(s_, mirror_);
             if (ls_.target_reachable && passes(target_, s_, shot)) return finish(Reason::hit);
             if (shot.escape) return finish(Reason::escape);
-            for (int j = 0; j < M; ++j) {
-                if ((s_.negative >> j) & 1u)
-                    s_.p[j] -= shot.t;
-                else
-                    s_.p[j] += shot.t;
-            }
+            for (int j = 0; j < M; ++j) s_.p[j] += sign<Int>(s_.negative, j) * shot.t;
             if (shot.absorber) {
                 if (options_.path) report();
                 return finish(Reason::absorbed);
@@ -84,12 +83,8 @@ public:
             if (options_.max_steps && reflections_ == *options_.max_steps)
                 return finish(Reason::limit);
             if (reflections_ == until) {
-                for (int j = 0; j < M; ++j) { // not taken yet: undo the move
-                    if ((s_.negative >> j) & 1u)
-                        s_.p[j] += shot.t;
-                    else
-                        s_.p[j] -= shot.t;
-                }
+                for (int j = 0; j < M; ++j) // not taken yet: undo the move
+                    s_.p[j] -= sign<Int>(s_.negative, j) * shot.t;
                 return false;
             }
             s_.negative ^= shot.flip;
@@ -159,10 +154,17 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
                 if (table) {
                     setup.pieces = table->size();
                     run.answer().shooter = "pieces";
+                    // Until the ray first reflects, the tables cannot say where it is.
+                    bool placed = false;
+                    typename lattice::PieceTable<Int>::Cursor where;
                     run.advance(
                         [&](const State<Int, M>& s, std::uint32_t mirror) {
-                            return mirror == no_mirror ? grid.shoot(s.p, s.negative)
-                                                       : table->shoot(s.p, s.negative, mirror);
+                            if (!placed) {
+                                if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
+                                where = table->at(mirror, s.negative);
+                                placed = true;
+                            }
+                            return table->shoot(s.p, where);
                         },
                         unlimited);
                     return run.answer();

@@ -41,13 +41,22 @@ class PieceTable {
 public:
     enum class Kind : std::uint8_t { reflect, escape, absorb };
 
+    // Where the ray is: the pieces of one (mirror, direction), and the axis
+    // positions on that mirror run along.
+    struct Cursor {
+        std::uint32_t begin = 0, count = 0;
+        std::uint8_t tangent = 0;
+    };
+
     struct Piece {
         Int from;          // first position on the mirror this piece covers
         Int t0;            // the next hit's parameter at u = from
         std::int8_t slope; // t(u) = t0 + slope * (u - from)
         std::uint8_t flip; // normal axes of the mirrors met there
         Kind kind;
-        std::uint32_t next; // a mirror met there (kind == reflect)
+        // After reflecting here: the next mirror's pieces for the new
+        // direction, stored inline so that a step needs no other lookup.
+        Cursor next;
     };
 
     // std::nullopt when the tables would need more than max_pieces pieces
@@ -62,19 +71,50 @@ public:
                 pieces_.data() + offsets_[element * 4 + negative + 1]};
     }
 
-    // The next hit from point p on mirror `element`, as the grid would give it.
-    Shot<Int> shoot(const Int (&p)[2], unsigned negative, std::uint32_t element) const {
-        const std::span<const Piece> range = pieces(element, negative);
-        const Int& u = p[tangent_[element]];
-        auto it = std::upper_bound(range.begin(), range.end(), u,
-                                   [](const Int& x, const Piece& piece) { return x < piece.from; });
-        const Piece& piece = *(it - 1);
+    // The pieces for leaving mirror `element` in direction `negative`.
+    Cursor at(std::uint32_t element, unsigned negative) const {
+        const std::uint32_t begin = offsets_[element * 4 + negative];
+        return {begin, offsets_[element * 4 + negative + 1] - begin, tangent_[element]};
+    }
+
+    // The next hit from point p, as the grid would give it; `where` must
+    // describe p's mirror and the direction, and moves on to the mirror hit
+    // (for the direction after reflecting there).
+    Shot<Int> shoot(const Int (&p)[2], Cursor& where) const {
+        const Piece* range = pieces_.data() + where.begin;
+        const Int& u = p[where.tangent];
+        // The piece holding u is the last one starting at or before u. A
+        // mirror has a handful of pieces, so counting them without branches
+        // beats a binary search, whose jumps the processor cannot predict.
+        std::uint32_t k = 0;
+        if (where.count <= 8) {
+            for (std::uint32_t i = 1; i < where.count; ++i) k += !(u < range[i].from);
+        } else {
+            k = static_cast<std::uint32_t>(
+                std::upper_bound(range, range + where.count, u,
+                                 [](const Int& x, const Piece& piece) { return x < piece.from; }) -
+                range - 1);
+        }
+        const Piece& piece = range[k];
         Shot<Int> shot;
         shot.escape = piece.kind == Kind::escape;
         shot.absorber = piece.kind == Kind::absorb;
         shot.flip = piece.flip;
-        shot.mirror = piece.next;
         shot.t = piece.t0 + Int(piece.slope) * Int(u - piece.from);
+        where = piece.next;
+        return shot;
+    }
+
+    // The same, entering at mirror `element` (for tests and the dump).
+    Shot<Int> shoot(const Int (&p)[2], unsigned negative, std::uint32_t element) const {
+        Cursor where = at(element, negative);
+        Shot<Int> shot = shoot(p, where);
+        shot.mirror = next_mirror_[static_cast<std::size_t>(
+            std::upper_bound(pieces_.begin() + offsets_[element * 4 + negative],
+                             pieces_.begin() + offsets_[element * 4 + negative + 1],
+                             p[tangent_[element]],
+                             [](const Int& x, const Piece& piece) { return x < piece.from; }) -
+            pieces_.begin() - 1)];
         return shot;
     }
 
@@ -85,8 +125,9 @@ public:
 
 private:
     std::vector<Piece> pieces_;
-    std::vector<std::uint32_t> offsets_; // (element * 4 + direction) -> first piece
-    std::vector<std::uint8_t> tangent_;  // the axis a position on the element runs along
+    std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)
+    std::vector<std::uint32_t> offsets_;     // (element * 4 + direction) -> first piece
+    std::vector<std::uint8_t> tangent_;      // the axis a position on the element runs along
 };
 
 template <class Int>
@@ -189,7 +230,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                             s.escape     ? Kind::escape
                             : s.absorber ? Kind::absorb
                                          : Kind::reflect,
-                            s.mirror};
+                            Cursor{}};
                 // Moving u along A moves the hit along B; t changes only when
                 // B is perpendicular to A (B's normal is A's tangent axis).
                 if (!s.escape && s.met == (1u << tangent)) {
@@ -200,12 +241,13 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                     const Piece& last = table.pieces_.back();
                     const bool same_map =
                         last.kind == piece.kind && last.flip == piece.flip &&
-                        last.next == piece.next && last.slope == piece.slope &&
+                        table.next_mirror_.back() == s.mirror && last.slope == piece.slope &&
                         (piece.kind == Kind::escape ||
                          last.t0 + Int(last.slope) * Int(u - last.from) == piece.t0);
                     if (same_map) return;
                 }
                 table.pieces_.push_back(piece);
+                table.next_mirror_.push_back(s.mirror);
             };
             for (std::size_t i = 0; i < b.size(); ++i) {
                 resolve(b[i]);
@@ -215,6 +257,16 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         }
     }
     table.offsets_[std::size_t{n} * 4] = static_cast<std::uint32_t>(table.pieces_.size());
+
+    // Link each reflecting piece to the pieces the ray continues from.
+    for (std::uint32_t m = 0; m < n; ++m)
+        for (unsigned d = 0; d < 4; ++d)
+            for (std::uint32_t k = table.offsets_[m * 4 + d]; k < table.offsets_[m * 4 + d + 1];
+                 ++k) {
+                Piece& piece = table.pieces_[k];
+                if (piece.kind == Kind::reflect)
+                    piece.next = table.at(table.next_mirror_[k], d ^ piece.flip);
+            }
     return table;
 }
 
@@ -230,7 +282,9 @@ void PieceTable<Int>::dump(std::ostream& out) const {
                     out << "escape\n";
                     continue;
                 }
-                out << (p.kind == Kind::absorb ? "absorbed" : "element " + std::to_string(p.next))
+                out << (p.kind == Kind::absorb
+                            ? "absorbed"
+                            : "element " + std::to_string(next_mirror_[&p - pieces_.data()]))
                     << " at t = " << to_integer(p.t0);
                 if (p.slope != 0) out << (p.slope > 0 ? " + (u - from)" : " - (u - from)");
                 if (p.kind == Kind::reflect)
