@@ -51,6 +51,8 @@ struct SolveOptions {
     CycleDetector cycle_detector = CycleDetector::first_state;
     Arithmetic arithmetic = Arithmetic::automatic;
     Shooter shooter = Shooter::automatic;
+    // Uniform grid cells per element; 0 picks the default for the dimension.
+    std::int64_t grid_density = 0;
     // Stop with Reason::limit rather than perform more than this many reflections.
     std::optional<std::uint64_t> max_steps;
     // Engine::graph refuses (Reason::limit) scenes with more lattice states.

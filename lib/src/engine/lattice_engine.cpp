@@ -124,6 +124,13 @@ private:
     }
 };
 
+// Cells per element. In 3D denser grids pay (fewer elements tested per
+// shot); in 2D the grid mostly builds the piece tables, which it does best
+// sparse. Measured on random boxes: see bench/RESULTS.md.
+constexpr std::int64_t default_density(int m) {
+    return m == 3 ? 32 : 2;
+}
+
 double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
@@ -131,7 +138,8 @@ double seconds_since(std::chrono::steady_clock::time_point begin) {
 template <class Int, int M, class Detector>
 Answer run(const LatticeScene& ls, const SolveOptions& options) {
     auto begin = std::chrono::steady_clock::now();
-    const lattice::UniformGrid<Int, M> grid(ls);
+    const lattice::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density
+                                                                     : default_density(M));
     Run<Int, M, Detector> run(ls, options);
     Answer::Setup& setup = run.answer().setup;
     setup.seconds = seconds_since(begin);

@@ -36,7 +36,9 @@ struct Shot {
 template <class Int, int M>
 class UniformGrid {
 public:
-    explicit UniformGrid(const LatticeScene& scene);
+    // About `cells_per_element` cells for each element: more cells mean fewer
+    // elements tested per cell but more cell walls crossed per shot.
+    explicit UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element = 2);
 
     // `negative` bit i set: the ray moves towards -infinity on axis i.
     Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
@@ -99,7 +101,7 @@ private:
 };
 
 template <class Int, int M>
-UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene) {
+UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element) {
     for (const LatticeElement& e : scene.elements) {
         Item it;
         for (int j = 0; j < M; ++j) {
@@ -122,9 +124,9 @@ UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene) {
             if (hi_[j] < it.hi[j]) hi_[j] = it.hi[j];
         }
     }
-    // About two cells per element: k cells per axis with k^M >= 2n, fewer on
-    // an axis whose extent has fewer lattice points.
-    std::int64_t k = 1, want = 2 * static_cast<std::int64_t>(items_.size());
+    // k cells per axis with k^M >= cells_per_element * n, fewer on an axis
+    // whose extent has fewer lattice points.
+    std::int64_t k = 1, want = cells_per_element * static_cast<std::int64_t>(items_.size());
     while (true) {
         std::int64_t p = 1;
         for (int j = 0; j < M; ++j) p *= k;
@@ -180,13 +182,16 @@ template <class Int, int M>
 Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
     Shot<Int> shot;
     if (items_.empty()) return shot;
-    auto neg = [&](int j) { return ((negative >> j) & 1u) != 0; };
+    // sigma_j = ±1: multiplying by it keeps the loops free of direction branches.
+    Int sigma[M];
+    for (int j = 0; j < M; ++j) sigma[j] = Int(1 - 2 * static_cast<int>((negative >> j) & 1u));
 
     // Clip the ray to the closed bounding box: t in [t_in, t_out].
     Int t_in = 0, t_out = 0;
     for (int j = 0; j < M; ++j) {
-        Int enter = neg(j) ? Int(p[j] - hi_[j]) : Int(lo_[j] - p[j]);
-        Int leave = neg(j) ? Int(p[j] - lo_[j]) : Int(hi_[j] - p[j]);
+        const bool neg = (negative >> j) & 1u;
+        Int enter = neg ? Int(p[j] - hi_[j]) : Int(lo_[j] - p[j]);
+        Int leave = neg ? Int(p[j] - lo_[j]) : Int(hi_[j] - p[j]);
         if (t_in < enter) t_in = enter;
         if (j == 0 || leave < t_out) t_out = leave;
     }
@@ -194,33 +199,35 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
 
     // The cell the ray is in just after t_in, and the t at which it crosses
     // the next wall on each axis.
-    std::int64_t i[M];
+    std::int64_t i[M], stride[M], c = 0;
     Int wall_t[M];
-    for (int j = 0; j < M; ++j) {
-        Int q = neg(j) ? Int(p[j] - t_in) : Int(p[j] + t_in);
-        Int rel = q - lo_[j];
-        std::int64_t c = to_index(neg(j) ? floor_div(rel - 1, h_[j]) : floor_div(rel, h_[j]));
-        i[j] = std::clamp<std::int64_t>(c, 0, n_[j] - 1);
-        Int wall = lo_[j] + Int(i[j] + (neg(j) ? 0 : 1)) * h_[j];
-        wall_t[j] = neg(j) ? Int(p[j] - wall) : Int(wall - p[j]);
+    for (int j = M - 1; j >= 0; --j) {
+        const bool neg = (negative >> j) & 1u;
+        Int rel = p[j] + sigma[j] * t_in - lo_[j];
+        std::int64_t cell = to_index(neg ? floor_div(Int(rel - 1), h_[j]) : floor_div(rel, h_[j]));
+        i[j] = std::clamp<std::int64_t>(cell, 0, n_[j] - 1);
+        Int wall = lo_[j] + Int(i[j] + (neg ? 0 : 1)) * h_[j];
+        wall_t[j] = sigma[j] * Int(wall - p[j]);
+        c = c * n_[j] + i[j];
     }
+    stride[0] = 1;
+    for (int j = 1; j < M; ++j) stride[j] = stride[j - 1] * n_[j - 1];
 
     while (true) {
         Int t_exit = wall_t[0];
         for (int j = 1; j < M; ++j)
             if (wall_t[j] < t_exit) t_exit = wall_t[j];
-        std::int64_t c = cell_index(i);
         for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
             const Item& it = items_[members_[k]];
             const int a = it.axis;
-            Int t = neg(a) ? Int(p[a] - it.lo[a]) : Int(it.lo[a] - p[a]);
-            if (t <= 0 || t_exit < t) continue;
-            if (!shot.escape && shot.t < t) continue;
+            const Int t = sigma[a] * Int(it.lo[a] - p[a]);
+            if (t <= 0 || t_exit < t || (!shot.escape && shot.t < t)) continue;
+            // On the normal axis the point is exactly the offset, so testing
+            // every axis needs no exception for it.
             bool inside = true;
-            for (int j = 0; j < M && inside; ++j) {
-                if (j == a) continue;
-                Int x = neg(j) ? Int(p[j] - t) : Int(p[j] + t);
-                inside = !(x < it.lo[j]) && !(it.hi[j] < x);
+            for (int j = 0; j < M; ++j) {
+                const Int x = p[j] + sigma[j] * t;
+                inside &= !(x < it.lo[j]) & !(it.hi[j] < x);
             }
             if (!inside) continue;
             if (shot.escape || t < shot.t) {
@@ -241,8 +248,10 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
         if (!shot.escape) return shot;
         for (int j = 0; j < M; ++j) {
             if (wall_t[j] != t_exit) continue;
-            i[j] += neg(j) ? -1 : 1;
+            const bool neg = (negative >> j) & 1u;
+            i[j] += neg ? -1 : 1;
             if (i[j] < 0 || i[j] >= n_[j]) return shot; // left the box: nothing more to meet
+            c += neg ? -stride[j] : stride[j];
             wall_t[j] += h_[j];
         }
     }

@@ -1,0 +1,264 @@
+// Next-hit queries on the lattice: an exact bounding volume hierarchy, with
+// the same interface and answers as UniformGrid::shoot.
+//
+// A binary tree built top down: a node's elements are split at the median of
+// their centres along the longest axis of the node's box (centres compared
+// as lo + hi, no division), down to leaves of at most `leaf_size` elements.
+// Nodes live in one array in depth-first order: the left child follows its
+// parent, the parent stores the right child's index. Leaves own a contiguous
+// run of the reordered elements.
+//
+// The ray p + t*sigma is diagonal (see lattice_scene.hpp), so its slab test
+// against a closed box is integer: it is inside for t in [enter, leave] with
+//     enter = max_j (sigma_j > 0 ? lo_j - p_j : p_j - hi_j),
+//     leave = min_j (sigma_j > 0 ? hi_j - p_j : p_j - lo_j).
+// A point where the ray meets an element lies in every box on the way up, so
+// a node can hold a hit at t only if enter <= t <= leave. The traversal visits
+// a node when enter <= leave, leave > 0 and enter <= the best t found so far:
+// ties are still visited, so every element met at the smallest t is seen,
+// and the answer (t, flip, met, absorber) equals a scan of all elements.
+// Values computed are differences of two coordinates (|.| <= 2B) and the
+// centre sums lo + hi (<= 2B), within lattice_int.hpp's 8B bound.
+#pragma once
+
+#include "lattice/lattice_int.hpp"
+#include "lattice/lattice_scene.hpp"
+#include "shoot/uniform_grid.hpp" // Shot
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace orthoray::lattice {
+
+template <class Int, int M>
+class BoundingVolumeHierarchy {
+public:
+    explicit BoundingVolumeHierarchy(const LatticeScene& scene);
+
+    // `negative` bit i set: the ray moves towards -infinity on axis i.
+    // Same contract as UniformGrid::shoot.
+    Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
+
+    std::size_t node_count() const { return nodes_.size(); }
+    std::size_t size() const { return items_.size(); }
+
+    static constexpr std::uint32_t leaf_size = 4;
+
+private:
+    struct Item {
+        Int lo[M], hi[M];    // closed box; lo == hi on the normal axis
+        std::uint32_t index; // in scene.elements
+        std::uint8_t axis;
+        bool absorber;
+    };
+    struct Node {
+        Int lo[M], hi[M];    // closed bounding box of the node's elements
+        std::uint32_t first; // leaf: first item; interior: index of the right child
+        std::uint32_t count; // leaf: number of items (> 0); interior: 0
+    };
+    std::vector<Item> items_; // in leaf order
+    std::vector<Node> nodes_; // depth first; nodes_[0] is the root
+
+    // Depth of a tree over n elements: halving down to leaf_size, so at most
+    // 33 levels for n < 2^32; a pending-node stack of 64 is always enough.
+    static constexpr int stack_size = 64;
+
+    std::uint32_t build(std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
+                        const std::vector<Item>& items, const std::vector<Int>& centre);
+
+    // The ray's parameter interval in a closed box: [enter, leave].
+    static void slab(const Int (&lo)[M], const Int (&hi)[M], const Int (&p)[M], unsigned negative,
+                     Int& enter, Int& leave) {
+        for (int j = 0; j < M; ++j) {
+            const bool neg = ((negative >> j) & 1u) != 0;
+            if (j == 0) {
+                enter = neg ? Int(p[0] - hi[0]) : Int(lo[0] - p[0]);
+                leave = neg ? Int(p[0] - lo[0]) : Int(hi[0] - p[0]);
+                continue;
+            }
+            if (neg) {
+                Int a = p[j] - hi[j];
+                if (enter < a) enter = a;
+                Int b = p[j] - lo[j];
+                if (b < leave) leave = b;
+            } else {
+                Int a = lo[j] - p[j];
+                if (enter < a) enter = a;
+                Int b = hi[j] - p[j];
+                if (b < leave) leave = b;
+            }
+        }
+    }
+};
+
+template <class Int, int M>
+BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& scene) {
+    const std::size_t n = scene.elements.size();
+    if (n == 0) return;
+    std::vector<Item> items;
+    items.reserve(n);
+    std::vector<Int> centre(n * M); // lo + hi per element and axis: twice the centre
+    for (std::size_t k = 0; k < n; ++k) {
+        const LatticeElement& e = scene.elements[k];
+        Item it;
+        for (int j = 0; j < M; ++j) {
+            it.lo[j] = from_integer<Int>(e.lo[j]);
+            it.hi[j] = from_integer<Int>(e.hi[j]);
+            centre[k * M + j] = Int(it.lo[j] + it.hi[j]);
+        }
+        it.index = static_cast<std::uint32_t>(k);
+        it.axis = static_cast<std::uint8_t>(e.axis);
+        it.absorber = e.absorber;
+        items.push_back(std::move(it));
+    }
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    nodes_.reserve(2 * ((n + leaf_size - 1) / leaf_size));
+    build(order, 0, static_cast<std::uint32_t>(n), items, centre);
+    items_.reserve(n);
+    for (std::uint32_t k : order) items_.push_back(std::move(items[k]));
+}
+
+// Builds the subtree over order[begin, end) and returns its node's index.
+template <class Int, int M>
+std::uint32_t BoundingVolumeHierarchy<Int, M>::build(std::vector<std::uint32_t>& order,
+                                                     std::uint32_t begin, std::uint32_t end,
+                                                     const std::vector<Item>& items,
+                                                     const std::vector<Int>& centre) {
+    const auto self = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    {
+        Node& node = nodes_.back();
+        const Item& head = items[order[begin]];
+        for (int j = 0; j < M; ++j) {
+            node.lo[j] = head.lo[j];
+            node.hi[j] = head.hi[j];
+        }
+        for (std::uint32_t k = begin + 1; k < end; ++k) {
+            const Item& it = items[order[k]];
+            for (int j = 0; j < M; ++j) {
+                if (it.lo[j] < node.lo[j]) node.lo[j] = it.lo[j];
+                if (node.hi[j] < it.hi[j]) node.hi[j] = it.hi[j];
+            }
+        }
+    }
+    if (end - begin <= leaf_size) {
+        nodes_[self].first = begin;
+        nodes_[self].count = end - begin;
+        return self;
+    }
+    int axis = 0;
+    {
+        const Node& node = nodes_[self];
+        Int longest = node.hi[0] - node.lo[0];
+        for (int j = 1; j < M; ++j) {
+            Int extent = node.hi[j] - node.lo[j];
+            if (longest < extent) longest = extent, axis = j;
+        }
+    }
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                         return centre[a * M + axis] < centre[b * M + axis];
+                     });
+    build(order, begin, mid, items, centre); // the left child is self + 1
+    const std::uint32_t right = build(order, mid, end, items, centre);
+    nodes_[self].first = right; // nodes_ may have grown: index again
+    nodes_[self].count = 0;
+    return self;
+}
+
+template <class Int, int M>
+Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
+    Shot<Int> shot;
+    if (nodes_.empty()) return shot;
+    auto neg = [&](int j) { return ((negative >> j) & 1u) != 0; };
+
+    // Nodes still to visit, with the t at which the ray enters them: a node
+    // whose enter exceeds the best t found by the time it is popped is skipped.
+    std::uint32_t stack[stack_size];
+    Int stack_enter[stack_size];
+    int top = 0;
+
+    Int enter, leave;
+    slab(nodes_[0].lo, nodes_[0].hi, p, negative, enter, leave);
+    if (leave < enter || leave <= 0) return shot;
+    std::uint32_t current = 0;
+    while (true) {
+        const Node& node = nodes_[current];
+        if (node.count != 0) {
+            for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+                const Item& it = items_[k];
+                const int a = it.axis;
+                Int t = neg(a) ? Int(p[a] - it.lo[a]) : Int(it.lo[a] - p[a]);
+                if (t <= 0) continue;
+                if (!shot.escape && shot.t < t) continue;
+                bool inside = true;
+                for (int j = 0; j < M && inside; ++j) {
+                    if (j == a) continue;
+                    Int x = neg(j) ? Int(p[j] - t) : Int(p[j] + t);
+                    inside = !(x < it.lo[j]) && !(it.hi[j] < x);
+                }
+                if (!inside) continue;
+                if (shot.escape || t < shot.t) {
+                    shot.escape = false;
+                    shot.t = t;
+                    shot.flip = 0;
+                    shot.met = 0;
+                    shot.absorber = false;
+                }
+                shot.met |= 1u << a;
+                if (it.absorber) {
+                    shot.absorber = true;
+                } else {
+                    shot.flip |= 1u << a;
+                    shot.mirror = it.index;
+                }
+            }
+        } else {
+            // Both children; the one the ray enters first is visited first.
+            const std::uint32_t left = current + 1, right = node.first;
+            Int enter_l, leave_l, enter_r, leave_r;
+            slab(nodes_[left].lo, nodes_[left].hi, p, negative, enter_l, leave_l);
+            slab(nodes_[right].lo, nodes_[right].hi, p, negative, enter_r, leave_r);
+            const bool hit_l =
+                !(leave_l < enter_l) && 0 < leave_l && (shot.escape || !(shot.t < enter_l));
+            const bool hit_r =
+                !(leave_r < enter_r) && 0 < leave_r && (shot.escape || !(shot.t < enter_r));
+            if (hit_l && hit_r) {
+                if (enter_r < enter_l) {
+                    stack[top] = left;
+                    stack_enter[top] = enter_l;
+                    ++top;
+                    current = right;
+                } else {
+                    stack[top] = right;
+                    stack_enter[top] = enter_r;
+                    ++top;
+                    current = left;
+                }
+                continue;
+            }
+            if (hit_l) {
+                current = left;
+                continue;
+            }
+            if (hit_r) {
+                current = right;
+                continue;
+            }
+        }
+        // Next pending node that can still hold a hit at t <= the best t.
+        while (true) {
+            if (top == 0) return shot;
+            --top;
+            if (shot.escape || !(shot.t < stack_enter[top])) break;
+        }
+        current = stack[top];
+    }
+}
+
+} // namespace orthoray::lattice
