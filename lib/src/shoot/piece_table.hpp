@@ -180,43 +180,56 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
     for (std::uint32_t e = 0; e < n; ++e)
         table.tangent_[e] = static_cast<std::uint8_t>(1 - box[e].axis);
 
-    // Breakpoints per (mirror, direction).
-    std::vector<std::vector<Int>> breaks(std::size_t{n} * 4);
-    std::size_t total = 0;
-    auto add_break_at = [&](const Int(&p)[2], unsigned d) {
+    // Breakpoints as (mirror * 4 + direction, position) pairs in one array,
+    // sorted once: far cheaper than a small vector per mirror and direction.
+    struct Break {
+        std::uint32_t slot;
+        Int u;
+        bool operator<(const Break& o) const { return slot != o.slot ? slot < o.slot : u < o.u; }
+        bool operator==(const Break& o) const { return slot == o.slot && u == o.u; }
+    };
+    std::vector<Break> breaks;
+    breaks.reserve(std::size_t{n} * 8 + events.size() * 12);
+    auto add_breaks_at = [&](const Int(&p)[2], unsigned first_d, unsigned last_d) {
         grid.for_each_element_at(p, [&](std::uint32_t m) {
             if (box[m].absorber) return;
-            breaks[m * 4 + d].push_back(p[table.tangent_[m]]);
-            ++total;
+            for (unsigned d = first_d; d <= last_d; ++d)
+                breaks.push_back(Break{m * 4 + d, p[table.tangent_[m]]});
         });
     };
     for (std::uint32_t m = 0; m < n; ++m)
         for (unsigned d = 0; d < 4; ++d) {
             const int t = table.tangent_[m];
-            breaks[m * 4 + d] = {box[m].lo[t], box[m].hi[t]};
+            breaks.push_back(Break{m * 4 + d, box[m].lo[t]});
+            breaks.push_back(Break{m * 4 + d, box[m].hi[t]});
         }
     for (const Point& event : events) {
         const Int p[2] = {event[0], event[1]};
+        add_breaks_at(p, 0, 3);
         for (unsigned d = 0; d < 4; ++d) {
-            add_break_at(p, d);
             const Shot<Int> back = grid.shoot(p, d ^ 3u);
             if (back.escape) continue;
             const Int q[2] = {(d & 1u) ? Int(p[0] + back.t) : Int(p[0] - back.t),
                               (d & 2u) ? Int(p[1] + back.t) : Int(p[1] - back.t)};
-            add_break_at(q, d);
+            add_breaks_at(q, d, d);
         }
-        if (2 * total > max_pieces) return std::nullopt;
+        if (2 * breaks.size() > max_pieces) return std::nullopt;
     }
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
 
     // Resolve each piece with one forward shot, merging runs with one map.
     table.offsets_.assign(std::size_t{n} * 4 + 1, 0);
+    std::size_t next_break = 0;
+    std::vector<Int> b; // the current slot's breakpoints, reused
     for (std::uint32_t m = 0; m < n; ++m) {
         for (unsigned d = 0; d < 4; ++d) {
             table.offsets_[m * 4 + d] = static_cast<std::uint32_t>(table.pieces_.size());
+            const std::uint32_t slot = m * 4 + d;
+            b.clear();
+            for (; next_break < breaks.size() && breaks[next_break].slot == slot; ++next_break)
+                b.push_back(breaks[next_break].u);
             if (box[m].absorber) continue;
-            std::vector<Int>& b = breaks[m * 4 + d];
-            std::sort(b.begin(), b.end());
-            b.erase(std::unique(b.begin(), b.end()), b.end());
             const int tangent = table.tangent_[m];
             const std::size_t first = table.pieces_.size();
             auto resolve = [&](const Int& u) {
