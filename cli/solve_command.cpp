@@ -31,8 +31,10 @@ const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetect
 const std::map<std::string, Arithmetic> arithmetics{
     {"auto", Arithmetic::automatic}, {"int128", Arithmetic::int128}, {"wide", Arithmetic::wide}};
 
-const std::map<std::string, Shooter> shooters{
-    {"auto", Shooter::automatic}, {"grid", Shooter::grid}, {"pieces", Shooter::pieces}};
+const std::map<std::string, Shooter> shooters{{"auto", Shooter::automatic},
+                                              {"grid", Shooter::grid},
+                                              {"bvh", Shooter::bvh},
+                                              {"pieces", Shooter::pieces}};
 
 template <class T>
 std::vector<std::string> names(const std::map<std::string, T>& choices) {
@@ -149,9 +151,10 @@ Command add_solve(CLI::App& app) {
                     "then GMP), int128 (at least 128-bit), or wide (always GMP)")
         ->check(CLI::IsMember(names(arithmetics)));
     cmd->add_option("--shooter", args->shooter,
-                    "how the lattice engine finds the next hit: auto (default: the uniform grid; "
-                    "in 2D, piece tables once 16384 reflections have not answered), grid, or "
-                    "pieces (2D piece tables from the start)")
+                    "how the lattice engine finds the next hit: auto (default: the uniform grid, "
+                    "or a bounding volume hierarchy when elements cluster; in 2D, piece tables "
+                    "once 16384 reflections have not answered), grid, bvh, or pieces (2D piece "
+                    "tables from the start)")
         ->check(CLI::IsMember(names(shooters)));
     return [args, max_steps] { return run(*args, max_steps); };
 }

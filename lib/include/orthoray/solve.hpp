@@ -32,8 +32,10 @@ enum class Arithmetic {
 
 // How the lattice engine finds the next hit.
 enum class Shooter {
-    automatic, // the grid; in 2D, piece tables once a short run has not answered
+    automatic, // the grid, or the BVH when elements cluster; in 2D, piece
+               // tables once a short run has not answered
     grid,      // always the uniform grid
+    bvh,       // always the bounding volume hierarchy
     pieces,    // 2D: piece tables from the start (the grid where there are none)
 };
 

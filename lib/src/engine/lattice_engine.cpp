@@ -11,6 +11,7 @@
 #include "engine/cycle_detector.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "shoot/bvh.hpp"
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
@@ -150,7 +151,7 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
     constexpr std::uint64_t unlimited = ~std::uint64_t{0};
 
     if constexpr (M == 2) {
-        if (options.shooter != Shooter::grid) {
+        if (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces) {
             const std::uint64_t first = options.shooter == Shooter::pieces ? 0 : grid_phase;
             if (!run.advance(by_grid, first)) {
                 // Piece tables may grow quadratic with crossings: past 64 pieces
@@ -182,6 +183,22 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
                 return run.answer();
             }
         }
+    }
+    // A grid suits elements spread over their box; when many crowd into a few
+    // cells (one cell holding more than 64 elements and 16 times its share),
+    // a shot through them tests them all, and the hierarchy is faster.
+    // Measured in docs/shooting.md.
+    const std::size_t share = grid.size() / std::max<std::size_t>(1, grid.cell_count()) + 1;
+    const std::size_t fullest = options.shooter == Shooter::automatic ? grid.fullest_cell() : 0;
+    if (options.shooter == Shooter::bvh || (fullest > 64 && fullest > 16 * share)) {
+        begin = std::chrono::steady_clock::now();
+        const lattice::BoundingVolumeHierarchy<Int, M> bvh(ls);
+        setup.seconds += seconds_since(begin);
+        run.answer().shooter = "bvh";
+        run.advance(
+            [&](const State<Int, M>& s, std::uint32_t) { return bvh.shoot(s.p, s.negative); },
+            unlimited);
+        return run.answer();
     }
     run.answer().shooter = "grid";
     run.advance(by_grid, unlimited);

@@ -6,7 +6,8 @@
 // as lo + hi, no division), down to leaves of at most `leaf_size` elements.
 // Nodes live in one array in depth-first order: the left child follows its
 // parent, the parent stores the right child's index. Leaves own a contiguous
-// run of the reordered elements.
+// run of the reordered elements. There is one traversal per direction mask,
+// its signs known at compile time.
 //
 // The ray p + t*sigma is diagonal (see lattice_scene.hpp), so its slab test
 // against a closed box is integer: it is inside for t in [enter, leave] with
@@ -26,9 +27,11 @@
 #include "shoot/uniform_grid.hpp" // Shot
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace orthoray::lattice {
@@ -45,7 +48,9 @@ public:
     std::size_t node_count() const { return nodes_.size(); }
     std::size_t size() const { return items_.size(); }
 
-    static constexpr std::uint32_t leaf_size = 4;
+    // At most this many elements a leaf. On random 3D scenes of 10^3..10^4
+    // rectangles, 2 was 10-20% faster than 4 (and about even with 1).
+    static constexpr std::uint32_t leaf_size = 2;
 
 private:
     struct Item {
@@ -62,35 +67,36 @@ private:
     std::vector<Item> items_; // in leaf order
     std::vector<Node> nodes_; // depth first; nodes_[0] is the root
 
-    // Depth of a tree over n elements: halving down to leaf_size, so at most
-    // 33 levels for n < 2^32; a pending-node stack of 64 is always enough.
+    // Each split halves the element count, so the tree over n < 2^32
+    // elements has at most 33 levels, and the traversal, which pushes at most
+    // one pending node a level, never needs more than 32 stack entries.
     static constexpr int stack_size = 64;
 
     std::uint32_t build(std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
                         const std::vector<Item>& items, const std::vector<Int>& centre);
 
     // The ray's parameter interval in a closed box: [enter, leave].
-    static void slab(const Int (&lo)[M], const Int (&hi)[M], const Int (&p)[M], unsigned negative,
-                     Int& enter, Int& leave) {
-        for (int j = 0; j < M; ++j) {
-            const bool neg = ((negative >> j) & 1u) != 0;
-            if (j == 0) {
-                enter = neg ? Int(p[0] - hi[0]) : Int(lo[0] - p[0]);
-                leave = neg ? Int(p[0] - lo[0]) : Int(hi[0] - p[0]);
-                continue;
-            }
-            if (neg) {
-                Int a = p[j] - hi[j];
-                if (enter < a) enter = a;
-                Int b = p[j] - lo[j];
-                if (b < leave) leave = b;
-            } else {
-                Int a = lo[j] - p[j];
-                if (enter < a) enter = a;
-                Int b = hi[j] - p[j];
-                if (b < leave) leave = b;
-            }
+    template <unsigned Negative>
+    static void slab(const Node& node, const Int (&p)[M], Int& enter, Int& leave) {
+        constexpr bool neg0 = (Negative & 1u) != 0;
+        enter = neg0 ? Int(p[0] - node.hi[0]) : Int(node.lo[0] - p[0]);
+        leave = neg0 ? Int(p[0] - node.lo[0]) : Int(node.hi[0] - p[0]);
+        for (int j = 1; j < M; ++j) {
+            const bool neg = ((Negative >> j) & 1u) != 0;
+            Int a = neg ? Int(p[j] - node.hi[j]) : Int(node.lo[j] - p[j]);
+            if (enter < a) enter = a;
+            Int b = neg ? Int(p[j] - node.lo[j]) : Int(node.hi[j] - p[j]);
+            if (b < leave) leave = b;
         }
+    }
+
+    template <unsigned Negative>
+    Shot<Int> shoot_signed(const Int (&p)[M]) const;
+
+    template <std::size_t... Negative>
+    static constexpr auto shooters(std::index_sequence<Negative...>) {
+        return std::array<Shot<Int> (BoundingVolumeHierarchy::*)(const Int(&)[M]) const,
+                          sizeof...(Negative)>{&BoundingVolumeHierarchy::shoot_signed<Negative>...};
     }
 };
 
@@ -173,29 +179,38 @@ std::uint32_t BoundingVolumeHierarchy<Int, M>::build(std::vector<std::uint32_t>&
 
 template <class Int, int M>
 Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
+    // One traversal a direction, its signs known at compile time.
+    static constexpr auto table = shooters(std::make_index_sequence<std::size_t{1} << M>{});
+    return (this->*table[negative & ((1u << M) - 1)])(p);
+}
+
+template <class Int, int M>
+template <unsigned Negative>
+Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const {
     Shot<Int> shot;
     if (nodes_.empty()) return shot;
-    auto neg = [&](int j) { return ((negative >> j) & 1u) != 0; };
+    auto neg = [](int j) { return ((Negative >> j) & 1u) != 0; };
 
-    // Nodes still to visit, with the t at which the ray enters them: a node
-    // whose enter exceeds the best t found by the time it is popped is skipped.
+    // Every hit lies in the root's box, so at t <= its `leave`: `bound` is
+    // that, then the smallest t met so far. A node (or an element) can hold a
+    // hit at the smallest t only if it can at some t <= bound.
+    Int bound, enter;
+    slab<Negative>(nodes_[0], p, enter, bound);
+    if (bound < enter || bound <= 0) return shot;
+
+    // Nodes still to visit, with the t at which the ray enters them.
     std::uint32_t stack[stack_size];
     Int stack_enter[stack_size];
     int top = 0;
-
-    Int enter, leave;
-    slab(nodes_[0].lo, nodes_[0].hi, p, negative, enter, leave);
-    if (leave < enter || leave <= 0) return shot;
     std::uint32_t current = 0;
     while (true) {
         const Node& node = nodes_[current];
         if (node.count != 0) {
             for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
                 const Item& it = items_[k];
-                const int a = it.axis;
+                const int a = M == 1 ? 0 : it.axis; // 0 in 1D: says so to the compiler
                 Int t = neg(a) ? Int(p[a] - it.lo[a]) : Int(it.lo[a] - p[a]);
-                if (t <= 0) continue;
-                if (!shot.escape && shot.t < t) continue;
+                if (t <= 0 || bound < t) continue;
                 bool inside = true;
                 for (int j = 0; j < M && inside; ++j) {
                     if (j == a) continue;
@@ -203,9 +218,9 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot(const Int (&p)[M], unsigned neg
                     inside = !(x < it.lo[j]) && !(it.hi[j] < x);
                 }
                 if (!inside) continue;
-                if (shot.escape || t < shot.t) {
+                if (shot.escape || t < bound) {
                     shot.escape = false;
-                    shot.t = t;
+                    bound = t;
                     shot.flip = 0;
                     shot.met = 0;
                     shot.absorber = false;
@@ -219,43 +234,33 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot(const Int (&p)[M], unsigned neg
                 }
             }
         } else {
-            // Both children; the one the ray enters first is visited first.
+            // Both children; the one the ray enters first is visited first,
+            // the other one pushed if it may hold a hit too.
             const std::uint32_t left = current + 1, right = node.first;
             Int enter_l, leave_l, enter_r, leave_r;
-            slab(nodes_[left].lo, nodes_[left].hi, p, negative, enter_l, leave_l);
-            slab(nodes_[right].lo, nodes_[right].hi, p, negative, enter_r, leave_r);
-            const bool hit_l =
-                !(leave_l < enter_l) && 0 < leave_l && (shot.escape || !(shot.t < enter_l));
-            const bool hit_r =
-                !(leave_r < enter_r) && 0 < leave_r && (shot.escape || !(shot.t < enter_r));
-            if (hit_l && hit_r) {
-                if (enter_r < enter_l) {
-                    stack[top] = left;
-                    stack_enter[top] = enter_l;
-                    ++top;
-                    current = right;
-                } else {
-                    stack[top] = right;
-                    stack_enter[top] = enter_r;
-                    ++top;
-                    current = left;
-                }
-                continue;
+            slab<Negative>(nodes_[left], p, enter_l, leave_l);
+            slab<Negative>(nodes_[right], p, enter_r, leave_r);
+            const bool hit_l = !(leave_l < enter_l) & (0 < leave_l) & !(bound < enter_l);
+            const bool hit_r = !(leave_r < enter_r) & (0 < leave_r) & !(bound < enter_r);
+            const bool swap = enter_r < enter_l;
+            if (swap ? hit_l : hit_r) {
+                stack[top] = swap ? left : right;
+                stack_enter[top] = swap ? enter_l : enter_r;
+                ++top;
             }
-            if (hit_l) {
-                current = left;
-                continue;
-            }
-            if (hit_r) {
-                current = right;
+            if (swap ? hit_r : hit_l) {
+                current = swap ? right : left;
                 continue;
             }
         }
-        // Next pending node that can still hold a hit at t <= the best t.
+        // The next pending node that may still hold a hit at t <= bound.
         while (true) {
-            if (top == 0) return shot;
+            if (top == 0) {
+                if (!shot.escape) shot.t = bound;
+                return shot;
+            }
             --top;
-            if (shot.escape || !(shot.t < stack_enter[top])) break;
+            if (!(bound < stack_enter[top])) break;
         }
         current = stack[top];
     }

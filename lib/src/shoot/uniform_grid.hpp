@@ -57,6 +57,15 @@ public:
 
     std::size_t size() const { return items_.size(); }
 
+    // The most elements any one cell holds: large when elements cluster in a
+    // small part of the box, where a grid degrades and a hierarchy does not.
+    std::size_t fullest_cell() const {
+        std::size_t most = 0;
+        for (std::size_t c = 0; c + 1 < offsets_.size(); ++c)
+            most = std::max<std::size_t>(most, offsets_[c + 1] - offsets_[c]);
+        return most;
+    }
+
 private:
     struct Item {
         Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
