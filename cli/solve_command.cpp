@@ -150,11 +150,12 @@ Command add_solve(CLI::App& app) {
                     "auto (default: the narrowest integers a bound proves safe: int64, int128, "
                     "then GMP), int128 (at least 128-bit), or wide (always GMP)")
         ->check(CLI::IsMember(names(arithmetics)));
-    cmd->add_option("--shooter", args->shooter,
-                    "how the lattice engine finds the next hit: auto (default: the uniform grid, "
-                    "or a bounding volume hierarchy when elements cluster; in 2D, piece tables "
-                    "once 16384 reflections have not answered), grid, bvh, or pieces (2D piece "
-                    "tables from the start)")
+    cmd->add_option(
+           "--shooter", args->shooter,
+           "how the lattice engine finds the next hit: auto (default: the uniform grid, "
+           "or a bounding volume hierarchy when elements cluster; in 2D, piece tables "
+           "once max(16384, 64 n) reflections have not answered), grid, bvh, or pieces (2D piece "
+           "tables from the start)")
         ->check(CLI::IsMember(names(shooters)));
     return [args, max_steps] { return run(*args, max_steps); };
 }

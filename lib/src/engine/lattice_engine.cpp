@@ -5,7 +5,7 @@
 // Shooters: the uniform grid answers any query with no setup beyond its
 // cells; in 2D the piece tables answer one with a binary search but cost a
 // preprocessing pass, so by default a run starts on the grid and switches to
-// the tables only if it has not ended after `grid_phase` reflections.
+// the tables only if it has not ended after grid_phase(n) reflections.
 #include "engine/lattice_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
@@ -15,6 +15,7 @@
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace orthoray::engine {
@@ -22,7 +23,13 @@ namespace {
 
 using lattice::LatticeScene;
 
-constexpr std::uint64_t grid_phase = 1u << 14;
+// Reflections stepped on the grid before building piece tables. The tables
+// cost about 10 microseconds a mirror and repay it only after some 60 to 600
+// reflections a mirror (bench/RESULTS.md: 10^3 and 10^5 mirrors), so the
+// switch waits longer in bigger scenes.
+std::uint64_t grid_phase(std::size_t elements) {
+    return std::max<std::uint64_t>(std::uint64_t{1} << 14, 64 * std::uint64_t{elements});
+}
 constexpr std::uint32_t no_mirror = ~std::uint32_t{0};
 
 template <class Int, int M>
@@ -152,7 +159,8 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
 
     if constexpr (M == 2) {
         if (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces) {
-            const std::uint64_t first = options.shooter == Shooter::pieces ? 0 : grid_phase;
+            const std::uint64_t first =
+                options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
             if (!run.advance(by_grid, first)) {
                 // Piece tables may grow quadratic with crossings: past 64 pieces
                 // a mirror on average, stay on the grid.

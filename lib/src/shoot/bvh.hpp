@@ -240,8 +240,11 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const
             Int enter_l, leave_l, enter_r, leave_r;
             slab<Negative>(nodes_[left], p, enter_l, leave_l);
             slab<Negative>(nodes_[right], p, enter_r, leave_r);
-            const bool hit_l = !(leave_l < enter_l) & (0 < leave_l) & !(bound < enter_l);
-            const bool hit_r = !(leave_r < enter_r) & (0 < leave_r) & !(bound < enter_r);
+            // Bitwise on purpose: no branches on unpredictable comparisons.
+            const bool hit_l = static_cast<int>(!(leave_l < enter_l)) &
+                               static_cast<int>(0 < leave_l) & static_cast<int>(!(bound < enter_l));
+            const bool hit_r = static_cast<int>(!(leave_r < enter_r)) &
+                               static_cast<int>(0 < leave_r) & static_cast<int>(!(bound < enter_r));
             const bool swap = enter_r < enter_l;
             if (swap ? hit_l : hit_r) {
                 stack[top] = swap ? left : right;

@@ -236,7 +236,7 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
             bool inside = true;
             for (int j = 0; j < M; ++j) {
                 const Int x = p[j] + sigma[j] * t;
-                inside &= !(x < it.lo[j]) & !(it.hi[j] < x);
+                inside &= static_cast<int>(!(x < it.lo[j])) & static_cast<int>(!(it.hi[j] < x));
             }
             if (!inside) continue;
             if (shot.escape || t < shot.t) {
