@@ -4,6 +4,7 @@
 // elements, on box walls and outside the bounding box, on all integer types.
 #include "shoot/bvh.hpp"
 #include "shoot/uniform_grid.hpp"
+#include "support/brute_force_shot.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -13,31 +14,6 @@ using namespace orthoray;
 using namespace orthoray::lattice;
 
 namespace {
-
-template <class Int, int M>
-Shot<Int> brute_force(const LatticeScene& ls, const Int (&p)[M], unsigned negative) {
-    Shot<Int> best;
-    for (const LatticeElement& e : ls.elements) {
-        const int a = e.axis;
-        const bool neg_a = (negative >> a) & 1u;
-        Int c = from_integer<Int>(e.lo[a]);
-        Int t = neg_a ? Int(p[a] - c) : Int(c - p[a]);
-        if (t <= 0) continue;
-        bool on = true;
-        for (int j = 0; j < M; ++j) {
-            Int x = ((negative >> j) & 1u) ? Int(p[j] - t) : Int(p[j] + t);
-            on = on && from_integer<Int>(e.lo[j]) <= x && x <= from_integer<Int>(e.hi[j]);
-        }
-        if (!on || (!best.escape && best.t < t)) continue;
-        if (best.escape || t < best.t) best = Shot<Int>{false, false, 0, t};
-        best.met |= 1u << a;
-        if (e.absorber)
-            best.absorber = true;
-        else
-            best.flip |= 1u << a;
-    }
-    return best;
-}
 
 // `got.mirror` is a mirror whose closed box holds the hit point p + t*sigma.
 template <class Int, int M>
@@ -56,7 +32,8 @@ bool mirror_holds_hit(const LatticeScene& ls, const Shot<Int>& got, const Int (&
 template <class Int, int M>
 void require_same(const LatticeScene& ls, const BoundingVolumeHierarchy<Int, M>& bvh,
                   const UniformGrid<Int, M>& grid, const Int (&p)[M], unsigned negative) {
-    const Shot<Int> got = bvh.shoot(p, negative), want = brute_force<Int, M>(ls, p, negative),
+    const Shot<Int> got = bvh.shoot(p, negative),
+                    want = test::brute_force_shot<Int, M>(ls, p, negative),
                     other = grid.shoot(p, negative);
     REQUIRE(got.escape == want.escape);
     REQUIRE(other.escape == want.escape);

@@ -2,6 +2,7 @@
 // for random lattice scenes and rays that start on cell walls, on elements
 // and outside the bounding box, on both integer types.
 #include "shoot/uniform_grid.hpp"
+#include "support/brute_force_shot.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -11,30 +12,6 @@ using namespace orthoray;
 using namespace orthoray::lattice;
 
 namespace {
-
-template <class Int, int M>
-Shot<Int> brute_force(const LatticeScene& ls, const Int (&p)[M], unsigned negative) {
-    Shot<Int> best;
-    for (const LatticeElement& e : ls.elements) {
-        const int a = e.axis;
-        const bool neg_a = (negative >> a) & 1u;
-        Int c = from_integer<Int>(e.lo[a]);
-        Int t = neg_a ? Int(p[a] - c) : Int(c - p[a]);
-        if (t <= 0) continue;
-        bool on = true;
-        for (int j = 0; j < M; ++j) {
-            Int x = ((negative >> j) & 1u) ? Int(p[j] - t) : Int(p[j] + t);
-            on = on && from_integer<Int>(e.lo[j]) <= x && x <= from_integer<Int>(e.hi[j]);
-        }
-        if (!on || (!best.escape && best.t < t)) continue;
-        if (best.escape || t < best.t) best = Shot<Int>{false, false, 0, t};
-        if (e.absorber)
-            best.absorber = true;
-        else
-            best.flip |= 1u << a;
-    }
-    return best;
-}
 
 template <class Int, int M>
 void check_random_shots(std::uint64_t seed) {
@@ -66,7 +43,7 @@ void check_random_shots(std::uint64_t seed) {
             }
             const unsigned negative = static_cast<unsigned>(pick(0, (1 << M) - 1));
             const Shot<Int> got = grid.shoot(p, negative),
-                            want = brute_force<Int, M>(ls, p, negative);
+                            want = test::brute_force_shot<Int, M>(ls, p, negative);
             REQUIRE(got.escape == want.escape);
             if (want.escape) continue;
             REQUIRE(got.t == want.t);

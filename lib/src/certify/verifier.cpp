@@ -7,6 +7,8 @@
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 
+#include "io/quoted_token.hpp"
+
 #include <array>
 #include <climits>
 #include <cstddef>
@@ -39,21 +41,6 @@ struct Token {
 
 // Reads the certificate one statement at a time and produces the InputErrors
 // with the file, line and column of the offending token.
-// A token quoted for a message, with bytes outside printable ASCII written as
-// \xNN so that a damaged certificate cannot put control codes on a terminal.
-std::string printable(std::string_view text) {
-    std::string out = "'";
-    for (unsigned char c : text.substr(0, 60)) {
-        if (c >= 0x20 && c < 0x7f) {
-            out += static_cast<char>(c);
-        } else {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02X", c);
-            out += buf;
-        }
-    }
-    return out + (text.size() > 60 ? "...'" : "'");
-}
 
 class Reader {
 public:
@@ -82,7 +69,7 @@ public:
         std::string found;
         int column = 0;
         if (index < tokens_.size()) {
-            found = printable(tokens_[index].text);
+            found = io::quoted_token(tokens_[index].text);
             column = tokens_[index].column;
         } else {
             found = "end of line";

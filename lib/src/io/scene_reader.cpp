@@ -4,6 +4,8 @@
 // the offending token (or of the end of the line when a token is missing).
 #include "orthoray/parse.hpp"
 
+#include "io/quoted_token.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -25,21 +27,8 @@ struct Token {
     int column;
 };
 
-// Quotes a token for a message, escaping anything that is not printable ASCII
-// so that binary garbage never reaches the terminal as is.
 std::string quoted(std::string_view text) {
-    std::string out = "'";
-    for (unsigned char c : text.substr(0, 60)) {
-        if (c >= 0x20 && c < 0x7f) {
-            out += static_cast<char>(c);
-        } else {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02X", c);
-            out += buf;
-        }
-    }
-    if (text.size() > 60) out += "...";
-    return out + "'";
+    return io::quoted_token(text);
 }
 
 constexpr const char* number_forms = "a number (integer, fraction like 7/2, or decimal like 0.125)";

@@ -218,20 +218,8 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const
                     inside = !(x < it.lo[j]) && !(it.hi[j] < x);
                 }
                 if (!inside) continue;
-                if (shot.escape || t < bound) {
-                    shot.escape = false;
-                    bound = t;
-                    shot.flip = 0;
-                    shot.met = 0;
-                    shot.absorber = false;
-                }
-                shot.met |= 1u << a;
-                if (it.absorber) {
-                    shot.absorber = true;
-                } else {
-                    shot.flip |= 1u << a;
-                    shot.mirror = it.index;
-                }
+                shot.record(t, a, it.absorber, it.index);
+                bound = shot.t;
             }
         } else {
             // Both children; the one the ray enters first is visited first,

@@ -31,6 +31,26 @@ struct Shot {
     Int t{};
     std::uint32_t mirror = 0; // one of the mirrors met (when flip != 0): index in the scene
     unsigned met = 0;         // normal axes of every element met, absorbers included
+
+    // Adds element `index` (normal `axis`), met at parameter `at` <= t: a
+    // smaller parameter replaces what was found, an equal one joins it, so
+    // that every element met at the first point counts.
+    void record(const Int& at, int axis, bool is_absorber, std::uint32_t index) {
+        if (escape || at < t) {
+            escape = false;
+            t = at;
+            flip = 0;
+            met = 0;
+            absorber = false;
+        }
+        met |= 1u << axis;
+        if (is_absorber) {
+            absorber = true;
+        } else {
+            flip |= 1u << axis;
+            mirror = index;
+        }
+    }
 };
 
 template <class Int, int M>
@@ -238,21 +258,7 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
                 const Int x = p[j] + sigma[j] * t;
                 inside &= static_cast<int>(!(x < it.lo[j])) & static_cast<int>(!(it.hi[j] < x));
             }
-            if (!inside) continue;
-            if (shot.escape || t < shot.t) {
-                shot.escape = false;
-                shot.t = t;
-                shot.flip = 0;
-                shot.met = 0;
-                shot.absorber = false;
-            }
-            shot.met |= 1u << a;
-            if (it.absorber) {
-                shot.absorber = true;
-            } else {
-                shot.flip |= 1u << a;
-                shot.mirror = members_[k];
-            }
+            if (inside) shot.record(t, a, it.absorber, members_[k]);
         }
         if (!shot.escape) return shot;
         for (int j = 0; j < M; ++j) {

@@ -1,0 +1,41 @@
+// The next-hit answer by scanning every element: the oracle for the grid and
+// the BVH. Written out in full on purpose (it does not use Shot::record), so
+// that it shares no logic with the structures it checks.
+#pragma once
+
+#include "shoot/uniform_grid.hpp"
+
+namespace orthoray::test {
+
+template <class Int, int M>
+lattice::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (&p)[M],
+                                    unsigned negative) {
+    using lattice::from_integer;
+    lattice::Shot<Int> best;
+    for (const lattice::LatticeElement& e : ls.elements) {
+        const int a = e.axis;
+        const bool neg_a = (negative >> a) & 1u;
+        Int c = from_integer<Int>(e.lo[a]);
+        Int t = neg_a ? Int(p[a] - c) : Int(c - p[a]);
+        if (t <= 0) continue;
+        bool on = true;
+        for (int j = 0; j < M; ++j) {
+            Int x = ((negative >> j) & 1u) ? Int(p[j] - t) : Int(p[j] + t);
+            on = on && from_integer<Int>(e.lo[j]) <= x && x <= from_integer<Int>(e.hi[j]);
+        }
+        if (!on || (!best.escape && best.t < t)) continue;
+        if (best.escape || t < best.t) {
+            best = lattice::Shot<Int>{};
+            best.escape = false;
+            best.t = t;
+        }
+        best.met |= 1u << a;
+        if (e.absorber)
+            best.absorber = true;
+        else
+            best.flip |= 1u << a;
+    }
+    return best;
+}
+
+} // namespace orthoray::test
