@@ -15,6 +15,7 @@
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
