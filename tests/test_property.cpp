@@ -37,6 +37,14 @@ std::string summary(const Answer& a) {
 struct Tally {
     int scenes = 0, graph_checked = 0, decided = 0;
     int by_reason[5] = {};
+
+    std::string summary() const {
+        std::ostringstream out;
+        out << "decided " << decided << ", graph " << graph_checked
+            << ", hit/escape/absorbed/cycle/limit " << by_reason[0] << "/" << by_reason[1] << "/"
+            << by_reason[2] << "/" << by_reason[3] << "/" << by_reason[4];
+        return out.str();
+    }
 };
 
 void check_scene(const Scene& scene, Tally& tally) {
@@ -98,10 +106,7 @@ TEST_CASE("engines, state graph and verifier agree on random 2D scenes", "[prope
     test::RandomSceneShape rational{2, 12, 6, 3, 3}, integral{2, 12, 6, 1, 2};
     run_family(20261122, 1500, rational, tally);
     run_family(424242, 1500, integral, tally);
-    WARN("2D: decided " << tally.decided << ", graph " << tally.graph_checked
-                        << ", hit/escape/absorbed/cycle/limit " << tally.by_reason[0] << "/"
-                        << tally.by_reason[1] << "/" << tally.by_reason[2] << "/"
-                        << tally.by_reason[3] << "/" << tally.by_reason[4]);
+    WARN("2D: " << tally.summary());
     CHECK(tally.scenes == 3000);
     // The families must exercise every outcome and the graph cross-check.
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
@@ -114,10 +119,7 @@ TEST_CASE("engines, state graph and verifier agree on random 3D scenes", "[prope
     test::RandomSceneShape rational{3, 12, 4, 2, 2}, integral{3, 10, 3, 1, 1};
     run_family(77, 1000, rational, tally);
     run_family(31337, 1000, integral, tally);
-    WARN("3D: decided " << tally.decided << ", graph " << tally.graph_checked
-                        << ", hit/escape/absorbed/cycle/limit " << tally.by_reason[0] << "/"
-                        << tally.by_reason[1] << "/" << tally.by_reason[2] << "/"
-                        << tally.by_reason[3] << "/" << tally.by_reason[4]);
+    WARN("3D: " << tally.summary());
     CHECK(tally.scenes == 2000);
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
         CHECK(tally.by_reason[static_cast<int>(r)] > 30);

@@ -81,21 +81,8 @@ public:
     // describe p's mirror and the direction, and moves on to the mirror hit
     // (for the direction after reflecting there).
     Shot<Int> shoot(const Int (&p)[2], Cursor& where) const {
-        const Piece* range = pieces_.data() + where.begin;
         const Int& u = p[where.tangent];
-        // The piece holding u is the last one starting at or before u. A
-        // mirror has a handful of pieces, so counting them without branches
-        // beats a binary search, whose jumps the processor cannot predict.
-        std::uint32_t k = 0;
-        if (where.count <= 8) {
-            for (std::uint32_t i = 1; i < where.count; ++i) k += !(u < range[i].from);
-        } else {
-            k = static_cast<std::uint32_t>(
-                std::upper_bound(range, range + where.count, u,
-                                 [](const Int& x, const Piece& piece) { return x < piece.from; }) -
-                range - 1);
-        }
-        const Piece& piece = range[k];
+        const Piece& piece = *locate(where, u);
         Shot<Int> shot;
         shot.escape = piece.kind == Kind::escape;
         shot.absorber = piece.kind == Kind::absorb;
@@ -105,16 +92,14 @@ public:
         return shot;
     }
 
-    // The same, entering at mirror `element` (for tests and the dump).
+    // The same, entering at mirror `element`, and naming a mirror met (for
+    // tests and the dump; the engine keeps a cursor instead).
     Shot<Int> shoot(const Int (&p)[2], unsigned negative, std::uint32_t element) const {
         Cursor where = at(element, negative);
+        const std::size_t k =
+            static_cast<std::size_t>(locate(where, p[where.tangent]) - pieces_.data());
         Shot<Int> shot = shoot(p, where);
-        shot.mirror = next_mirror_[static_cast<std::size_t>(
-            std::upper_bound(pieces_.begin() + offsets_[element * 4 + negative],
-                             pieces_.begin() + offsets_[element * 4 + negative + 1],
-                             p[tangent_[element]],
-                             [](const Int& x, const Piece& piece) { return x < piece.from; }) -
-            pieces_.begin() - 1)];
+        shot.mirror = next_mirror_[k];
         return shot;
     }
 
@@ -124,6 +109,24 @@ public:
     void dump(std::ostream& out) const;
 
 private:
+    // The piece holding position u: the last one of the range
+    // starting at or before u. A mirror has a handful of pieces, so counting
+    // them without branches beats a binary search, whose jumps the processor
+    // cannot predict.
+    const Piece* locate(const Cursor& where, const Int& u) const {
+        const Piece* range = pieces_.data() + where.begin;
+        std::uint32_t k = 0;
+        if (where.count <= 8) {
+            for (std::uint32_t i = 1; i < where.count; ++i) k += !(u < range[i].from);
+        } else {
+            k = static_cast<std::uint32_t>(
+                std::upper_bound(range, range + where.count, u,
+                                 [](const Int& x, const Piece& piece) { return x < piece.from; }) -
+                range - 1);
+        }
+        return range + k;
+    }
+
     std::vector<Piece> pieces_;
     std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)
     std::vector<std::uint32_t> offsets_;     // (element * 4 + direction) -> first piece
