@@ -34,7 +34,8 @@ const std::map<std::string, Arithmetic> arithmetics{
 const std::map<std::string, Shooter> shooters{{"auto", Shooter::automatic},
                                               {"grid", Shooter::grid},
                                               {"bvh", Shooter::bvh},
-                                              {"pieces", Shooter::pieces}};
+                                              {"pieces", Shooter::pieces},
+                                              {"section", Shooter::section}};
 
 template <class T>
 std::vector<std::string> names(const std::map<std::string, T>& choices) {

@@ -5,6 +5,7 @@
 #include "shoot/bvh.hpp"
 #include "shoot/uniform_grid.hpp"
 #include "support/brute_force_shot.hpp"
+#include "support/random_lattice.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -14,20 +15,6 @@ using namespace orthoray;
 using namespace orthoray::lattice;
 
 namespace {
-
-// `got.mirror` is a mirror whose closed box holds the hit point p + t*sigma.
-template <class Int, int M>
-bool mirror_holds_hit(const LatticeScene& ls, const Shot<Int>& got, const Int (&p)[M],
-                      unsigned negative) {
-    if (got.mirror >= ls.elements.size()) return false;
-    const LatticeElement& e = ls.elements[got.mirror];
-    if (e.absorber || ((got.flip >> e.axis) & 1u) == 0) return false;
-    for (int j = 0; j < M; ++j) {
-        Int x = ((negative >> j) & 1u) ? Int(p[j] - got.t) : Int(p[j] + got.t);
-        if (x < from_integer<Int>(e.lo[j]) || from_integer<Int>(e.hi[j]) < x) return false;
-    }
-    return true;
-}
 
 template <class Int, int M>
 void require_same(const LatticeScene& ls, const BoundingVolumeHierarchy<Int, M>& bvh,
@@ -46,38 +33,17 @@ void require_same(const LatticeScene& ls, const BoundingVolumeHierarchy<Int, M>&
     REQUIRE(other.flip == want.flip);
     REQUIRE(other.met == want.met);
     REQUIRE(other.absorber == want.absorber);
-    if (got.flip != 0) REQUIRE(mirror_holds_hit<Int, M>(ls, got, p, negative));
+    if (got.flip != 0) REQUIRE(test::mirror_holds_hit<Int, M>(ls, got, p, negative));
 }
 
-// Random scenes of n elements with coordinates in [-range, range] times
-// `scale` (plus a small offset), some duplicated or overlapping.
+// Random scenes (tests/support/random_lattice.hpp) and query points.
 template <class Int, int M>
 void check_random_shots(std::uint64_t seed, int scenes, int max_elements, int shots,
                         const Integer& scale = 1) {
     std::mt19937_64 rng(seed);
-    auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-    auto coordinate = [&](int v) { return Integer(scale * v); };
     for (int scene_index = 0; scene_index < scenes; ++scene_index) {
-        LatticeScene ls;
-        ls.dim = M;
-        const int range = pick(2, 30), n = pick(1, max_elements);
-        for (int i = 0; i < n; ++i) {
-            if (i > 0 && pick(0, 7) == 0) { // a copy of an earlier element, maybe an absorber
-                LatticeElement e = ls.elements[pick(0, i - 1)];
-                if (pick(0, 1)) e.absorber = !e.absorber;
-                ls.elements.push_back(e);
-                continue;
-            }
-            LatticeElement e;
-            e.axis = pick(0, M - 1);
-            e.absorber = pick(0, 5) == 0;
-            for (int j = 0; j < M; ++j) {
-                int a = pick(-range, range), b = pick(-range, range);
-                e.lo[j] = coordinate(std::min(a, b));
-                e.hi[j] = j == e.axis ? e.lo[j] : coordinate(std::max(a, b) + (a == b));
-            }
-            ls.elements.push_back(e);
-        }
+        int range = 0;
+        const LatticeScene ls = test::random_lattice_scene<M>(rng, max_elements, range, scale);
         const BoundingVolumeHierarchy<Int, M> bvh(ls);
         const UniformGrid<Int, M> grid(ls);
         REQUIRE(bvh.size() == ls.elements.size());
@@ -85,25 +51,8 @@ void check_random_shots(std::uint64_t seed, int scenes, int max_elements, int sh
         REQUIRE(bvh.node_count() < 2 * ls.elements.size());
         for (int shot = 0; shot < shots; ++shot) {
             Int p[M];
-            const int kind = pick(0, 3);
-            for (int j = 0; j < M; ++j)
-                p[j] = from_integer<Int>(coordinate(pick(-range - 3, range + 3)));
-            if (kind == 0) { // on a corner of an element
-                const LatticeElement& e = ls.elements[pick(0, n - 1)];
-                for (int j = 0; j < M; ++j)
-                    p[j] = from_integer<Int>(pick(0, 1) ? e.lo[j] : e.hi[j]);
-            } else if (kind == 1) { // on an element's plane, anywhere in (or near) its box
-                const LatticeElement& e = ls.elements[pick(0, n - 1)];
-                p[e.axis] = from_integer<Int>(e.lo[e.axis]);
-            } else if (kind == 2) { // on walls of boxes: coordinates taken from elements
-                for (int j = 0; j < M; ++j) {
-                    const LatticeElement& e = ls.elements[pick(0, n - 1)];
-                    p[j] = from_integer<Int>(pick(0, 1) ? e.lo[j] : e.hi[j]);
-                }
-            }
-            if (pick(0, 9) == 0) // shifted by one lattice unit
-                p[pick(0, M - 1)] += pick(0, 1) ? Int(1) : Int(-1);
-            const unsigned negative = static_cast<unsigned>(pick(0, (1 << M) - 1));
+            test::random_query_point<Int, M>(rng, ls, range, scale, p);
+            const unsigned negative = static_cast<unsigned>(test::pick(rng, 0, (1 << M) - 1));
             require_same<Int, M>(ls, bvh, grid, p, negative);
         }
     }
@@ -114,36 +63,12 @@ void check_random_shots(std::uint64_t seed, int scenes, int max_elements, int sh
 template <class Int, int M>
 void check_trajectory(std::uint64_t seed, int obstacles, int steps) {
     std::mt19937_64 rng(seed);
-    auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-    const int size = 1000;
-    LatticeScene ls;
-    ls.dim = M;
-    for (int a = 0; a < M; ++a)
-        for (int side = 0; side < 2; ++side) {
-            LatticeElement wall;
-            wall.axis = a;
-            for (int j = 0; j < M; ++j) {
-                wall.lo[j] = j == a ? side * size : 0;
-                wall.hi[j] = j == a ? side * size : size;
-            }
-            ls.elements.push_back(wall);
-        }
-    for (int i = 0; i < obstacles; ++i) {
-        LatticeElement e;
-        e.axis = pick(0, M - 1);
-        e.absorber = pick(0, 10) == 0;
-        for (int j = 0; j < M; ++j) {
-            const int a = pick(1, size - 1), b = std::min(size - 1, a + pick(1, 120));
-            e.lo[j] = a;
-            e.hi[j] = j == e.axis ? a : b;
-        }
-        ls.elements.push_back(e);
-    }
+    const LatticeScene ls = test::random_box_scene<M>(rng, obstacles);
     const BoundingVolumeHierarchy<Int, M> bvh(ls);
     const UniformGrid<Int, M> grid(ls);
     Int p[M];
-    for (int j = 0; j < M; ++j) p[j] = pick(1, size - 1);
-    unsigned negative = static_cast<unsigned>(pick(0, (1 << M) - 1));
+    for (int j = 0; j < M; ++j) p[j] = test::pick(rng, 1, 999);
+    unsigned negative = static_cast<unsigned>(test::pick(rng, 0, (1 << M) - 1));
     for (int step = 0; step < steps; ++step) {
         require_same<Int, M>(ls, bvh, grid, p, negative);
         const Shot<Int> s = bvh.shoot(p, negative);

@@ -52,7 +52,7 @@ void check_scene(const Scene& scene, Tally& tally) {
     const Answer lattice = run(scene, Engine::lattice);
     const Answer reference = run(scene, Engine::reference);
     REQUIRE(summary(lattice) == summary(reference));
-    for (Shooter shooter : {Shooter::grid, Shooter::bvh, Shooter::pieces})
+    for (Shooter shooter : {Shooter::grid, Shooter::bvh, Shooter::pieces, Shooter::section})
         REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state,
                             Arithmetic::automatic, step_cap, shooter)) == summary(lattice));
     for (Arithmetic wider : {Arithmetic::int128, Arithmetic::wide})

@@ -38,4 +38,19 @@ lattice::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (
     return best;
 }
 
+// `got.mirror` is a mirror whose closed box holds the hit point p + t*sigma.
+template <class Int, int M>
+bool mirror_holds_hit(const lattice::LatticeScene& ls, const lattice::Shot<Int>& got,
+                      const Int (&p)[M], unsigned negative) {
+    if (got.mirror >= ls.elements.size()) return false;
+    const lattice::LatticeElement& e = ls.elements[got.mirror];
+    if (e.absorber || ((got.flip >> e.axis) & 1u) == 0) return false;
+    for (int j = 0; j < M; ++j) {
+        Int x = ((negative >> j) & 1u) ? Int(p[j] - got.t) : Int(p[j] + got.t);
+        if (x < lattice::from_integer<Int>(e.lo[j]) || lattice::from_integer<Int>(e.hi[j]) < x)
+            return false;
+    }
+    return true;
+}
+
 } // namespace orthoray::test

@@ -21,7 +21,7 @@ struct Answer {
     std::string engine; // which engine decided it ("lattice", "reference", "graph")
     std::string
         arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
-    std::string shooter; // how the lattice engine found next hits: "grid", "pieces" (2D), or ""
+    std::string shooter; // how the lattice engine found next hits: "grid", "bvh", "section", "pieces" (2D), or ""
 
     // What the lattice engine built before or while stepping.
     struct Setup {

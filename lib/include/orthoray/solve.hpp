@@ -32,11 +32,13 @@ enum class Arithmetic {
 
 // How the lattice engine finds the next hit.
 enum class Shooter {
-    automatic, // the grid, or the BVH when elements cluster; in 2D, piece
-               // tables once a short run has not answered
+    automatic, // 3D: the cross-section grid, or the BVH when elements cluster;
+               // 2D: the uniform grid, then piece tables once a short run has
+               // not answered
     grid,      // always the uniform grid
     bvh,       // always the bounding volume hierarchy
     pieces,    // 2D: piece tables from the start (the grid where there are none)
+    section,   // always the cross-section grid (no cell walking)
 };
 
 // Receives the trajectory as it is computed: first the start point, then

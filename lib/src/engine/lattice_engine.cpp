@@ -12,6 +12,7 @@
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "shoot/bvh.hpp"
+#include "shoot/cross_section_grid.hpp"
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
@@ -132,85 +133,126 @@ private:
     }
 };
 
-// Cells per element. In 3D denser grids pay (fewer elements tested per
-// shot); in 2D the grid mostly builds the piece tables, which it does best
-// sparse. Measured on random boxes: see bench/RESULTS.md.
-constexpr std::int64_t default_density(int m) {
-    return m == 3 ? 32 : 2;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
+// Steps to the answer with a shooter built by `make` (its setup time counted),
+// reporting its name.
+template <class Int, int M, class Detector, class Make>
+Answer finish_with(Run<Int, M, Detector>& run, const char* name, Make&& make) {
+    const auto begin = std::chrono::steady_clock::now();
+    const auto shooter = make();
+    run.answer().setup.seconds += seconds_since(begin);
+    run.answer().shooter = name;
+    run.advance(
+        [&](const State<Int, M>& s, std::uint32_t) { return shooter.shoot(s.p, s.negative); },
+        ~std::uint64_t{0});
+    return run.answer();
+}
+
+// A shooter suits elements spread over their box; when many crowd into a few
+// cells (one cell holding more than 64 elements and 16 times its share), a
+// shot through them tests them all, and the hierarchy is faster. Measured in
+// docs/shooting.md.
+bool clustered(std::size_t fullest, std::size_t members, std::size_t cells) {
+    const std::size_t share = members / std::max<std::size_t>(1, cells) + 1;
+    return fullest > 64 && fullest > 16 * share;
+}
+
+// 2D: the uniform grid first (no setup, so short questions stay instant),
+// then the piece tables once a run has gone on for grid_phase reflections.
 template <class Int, int M, class Detector>
-Answer run(const LatticeScene& ls, const SolveOptions& options) {
+Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const SolveOptions& options) {
     auto begin = std::chrono::steady_clock::now();
-    const lattice::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density
-                                                                     : default_density(M));
-    Run<Int, M, Detector> run(ls, options);
+    const lattice::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2);
     Answer::Setup& setup = run.answer().setup;
-    setup.seconds = seconds_since(begin);
+    setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
     auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
         return grid.shoot(s.p, s.negative);
     };
-    constexpr std::uint64_t unlimited = ~std::uint64_t{0};
-
-    if constexpr (M == 2) {
-        if (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces) {
-            const std::uint64_t first =
-                options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
-            if (!run.advance(by_grid, first)) {
-                // Piece tables may grow quadratic with crossings: past 64 pieces
-                // a mirror on average, stay on the grid.
-                begin = std::chrono::steady_clock::now();
-                const auto table =
-                    lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
-                setup.seconds += seconds_since(begin);
-                if (table) {
-                    setup.pieces = table->size();
-                    run.answer().shooter = "pieces";
-                    // Until the ray first reflects, the tables cannot say where it is.
-                    bool placed = false;
-                    typename lattice::PieceTable<Int>::Cursor where;
-                    run.advance(
-                        [&](const State<Int, M>& s, std::uint32_t mirror) {
-                            if (!placed) {
-                                if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
-                                where = table->at(mirror, s.negative);
-                                placed = true;
-                            }
-                            return table->shoot(s.p, where);
-                        },
-                        unlimited);
-                    return run.answer();
-                }
-            } else {
-                run.answer().shooter = "grid";
-                return run.answer();
-            }
+    run.answer().shooter = "grid";
+    const bool tables = options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
+    if (tables) {
+        const std::uint64_t first =
+            options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
+        if (run.advance(by_grid, first)) return run.answer();
+        // Piece tables may grow quadratic with crossings: past 64 pieces a
+        // mirror on average, stay on the grid.
+        begin = std::chrono::steady_clock::now();
+        const auto table = lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+        setup.seconds += seconds_since(begin);
+        if (table) {
+            setup.pieces = table->size();
+            run.answer().shooter = "pieces";
+            // Until the ray first reflects, the tables cannot say where it is.
+            bool placed = false;
+            typename lattice::PieceTable<Int>::Cursor where;
+            run.advance(
+                [&](const State<Int, M>& s, std::uint32_t mirror) {
+                    if (!placed) {
+                        if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
+                        where = table->at(mirror, s.negative);
+                        placed = true;
+                    }
+                    return table->shoot(s.p, where);
+                },
+                ~std::uint64_t{0});
+            return run.answer();
         }
     }
-    // A grid suits elements spread over their box; when many crowd into a few
-    // cells (one cell holding more than 64 elements and 16 times its share),
-    // a shot through them tests them all, and the hierarchy is faster.
-    // Measured in docs/shooting.md.
-    const std::size_t share = grid.size() / std::max<std::size_t>(1, grid.cell_count()) + 1;
-    const std::size_t fullest = options.shooter == Shooter::automatic ? grid.fullest_cell() : 0;
-    if (options.shooter == Shooter::bvh || (fullest > 64 && fullest > 16 * share)) {
-        begin = std::chrono::steady_clock::now();
-        const lattice::BoundingVolumeHierarchy<Int, M> bvh(ls);
-        setup.seconds += seconds_since(begin);
-        run.answer().shooter = "bvh";
-        run.advance(
-            [&](const State<Int, M>& s, std::uint32_t) { return bvh.shoot(s.p, s.negative); },
-            unlimited);
-        return run.answer();
-    }
-    run.answer().shooter = "grid";
-    run.advance(by_grid, unlimited);
+    if (options.shooter == Shooter::bvh ||
+        (options.shooter == Shooter::automatic &&
+         clustered(grid.fullest_cell(), grid.size(), grid.cell_count())))
+        return finish_with(run, "bvh",
+                           [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+    if (options.shooter == Shooter::section)
+        return finish_with(run, "section", [&] { return lattice::CrossSectionGrid<Int, M>(ls); });
+    run.advance(by_grid, ~std::uint64_t{0});
     return run.answer();
+}
+
+// 1D and 3D: the cross-section grid, which looks the ray's line up instead
+// of walking cells (docs/shooting.md), or the BVH when elements cluster.
+template <class Int, int M, class Detector>
+Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
+                   const SolveOptions& options) {
+    switch (options.shooter) {
+    case Shooter::grid:
+        return finish_with(run, "grid", [&] {
+            return lattice::UniformGrid<Int, M>(ls,
+                                                options.grid_density ? options.grid_density : 32);
+        });
+    case Shooter::bvh:
+        return finish_with(run, "bvh",
+                           [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+    default:
+        break;
+    }
+    auto begin = std::chrono::steady_clock::now();
+    const lattice::CrossSectionGrid<Int, M> section(ls);
+    Answer::Setup& setup = run.answer().setup;
+    setup.seconds += seconds_since(begin);
+    setup.cells = section.cell_count();
+    if (options.shooter == Shooter::automatic &&
+        clustered(section.fullest_cell(), section.member_count(), section.cell_count()))
+        return finish_with(run, "bvh",
+                           [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+    run.answer().shooter = "section";
+    run.advance(
+        [&](const State<Int, M>& s, std::uint32_t) { return section.shoot(s.p, s.negative); },
+        ~std::uint64_t{0});
+    return run.answer();
+}
+
+template <class Int, int M, class Detector>
+Answer run(const LatticeScene& ls, const SolveOptions& options) {
+    Run<Int, M, Detector> run(ls, options);
+    if constexpr (M == 2)
+        return run_planar(run, ls, options);
+    else
+        return run_spatial(run, ls, options);
 }
 
 template <class Int, int M>

@@ -1,0 +1,272 @@
+// Next-hit queries without walking: a grid on the cross-section of each
+// direction's bundle of parallel lines.
+//
+// On the lattice the ray moves along one of the 2^M diagonal directions
+// sigma in {±1}^M (lattice_scene.hpp). Fix sigma. Every line of direction
+// sigma is named by its M - 1 cross-section coordinates
+//
+//     a_j = x_j - sigma_j * sigma_0 * x_0        (j = 1 .. M-1),
+//
+// which do not change along the line (x_j moves by sigma_j * t and x_0 by
+// sigma_0 * t), and a point on it by its depth D = sigma_0 * x_0, which grows
+// by exactly t. So "the first element met after p" is a question about one
+// line: among the elements the line a(p) meets, the one with the smallest
+// hit depth D > D(p). A grid over the (M-1)-dimensional cross-section lists,
+// for each cell, the elements that some line of the cell meets, sorted by the
+// smallest depth at which a line of the cell can meet them. A query looks up
+// one cell (two shifts: cell sides are powers of two) and scans a short run
+// of that list; unlike the uniform grid of uniform_grid.hpp it walks no cells
+// and takes no branch on which wall the ray crosses next.
+//
+// Why the scan can start late and stop early. For an element with normal axis
+// k and offset c, the hit depth on the line a is sigma_0 * c when k = 0, and
+// sigma_k * (c - a_k) otherwise (from a_k = c - sigma_k sigma_0 x_0). Across
+// one cell a_k varies by less than the cell side h_k, so every hit depth of a
+// member lies in [key, key + h_k - 1], where key is the member's smallest
+// possible depth in the cell (clamped to the element's own depth range).
+// Members sorted by key: those with key + h - 1 <= D(p) (h the largest side)
+// lie behind p and are skipped by one binary search, and once a hit at depth
+// D* is known, members with key > D* cannot be met at or before it. All
+// arithmetic is exact integer arithmetic on values bounded as in
+// lattice_int.hpp (|a_j| <= 2B, offsets into the grid <= 4B, keys <= 3B).
+#pragma once
+
+#include "shoot/uniform_grid.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace orthoray::lattice {
+
+template <class Int, int M>
+class CrossSectionGrid {
+public:
+    // About `cells_per_element` cells for each element in each direction's
+    // cross-section: more cells mean shorter member lists but more
+    // registrations (an element is listed in every cell its shadow covers).
+    explicit CrossSectionGrid(const LatticeScene& scene, std::int64_t cells_per_element = 1);
+
+    // Same contract as UniformGrid::shoot: the first elements met at t > 0.
+    Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
+
+    // Registrations over all directions: the structure's size.
+    std::size_t member_count() const {
+        std::size_t total = 0;
+        for (const Bundle& b : bundles_) total += b.members.size();
+        return total;
+    }
+    // The most members any one cell holds: large when elements crowd into a
+    // small part of the scene.
+    std::size_t fullest_cell() const {
+        std::size_t most = 0;
+        for (const Bundle& b : bundles_)
+            for (std::size_t c = 0; c + 1 < b.offsets.size(); ++c)
+                most = std::max<std::size_t>(most, b.offsets[c + 1] - b.offsets[c]);
+        return most;
+    }
+    std::size_t cell_count() const {
+        std::size_t total = 0;
+        for (const Bundle& b : bundles_) total += b.offsets.size() - 1;
+        return total;
+    }
+
+private:
+    static constexpr int S = M - 1; // cross-section dimension
+
+    struct Item {
+        Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
+        std::uint8_t axis;
+        bool absorber;
+    };
+    // A registration of an element in a cell. The plane's axis and offset are
+    // copied in, so that members met behind p or beyond the best hit so far
+    // are rejected without loading the element.
+    struct Member {
+        Int key;    // smallest depth at which a line of the cell can meet the element
+        Int offset; // the element's plane: x_axis = offset
+        std::uint32_t item;
+        std::uint8_t axis;
+    };
+    // The lines of one direction: a grid over their cross-section.
+    struct Bundle {
+        Int origin[M];                      // smallest a_j over all elements
+        Int limit[M];                       // largest a_j
+        unsigned shift[M]{};                // cell side on axis j is 2^shift[j]
+        std::int64_t cells[M]{};            // cells on axis j
+        Int reach{};                        // largest cell side minus one
+        std::vector<std::uint32_t> offsets; // CSR: cell -> members, sorted by key
+        std::vector<Member> members;
+    };
+
+    std::vector<Item> items_;
+    std::array<Bundle, (1u << M)> bundles_;
+
+    static Int sigma(unsigned negative, int j) {
+        return Int(1 - 2 * static_cast<int>((negative >> j) & 1u));
+    }
+
+    void build(Bundle& bundle, unsigned negative, std::int64_t cells_per_element);
+};
+
+template <class Int, int M>
+CrossSectionGrid<Int, M>::CrossSectionGrid(const LatticeScene& scene,
+                                           std::int64_t cells_per_element) {
+    for (const LatticeElement& e : scene.elements) {
+        Item it;
+        for (int j = 0; j < M; ++j) {
+            it.lo[j] = from_integer<Int>(e.lo[j]);
+            it.hi[j] = from_integer<Int>(e.hi[j]);
+        }
+        it.axis = static_cast<std::uint8_t>(e.axis);
+        it.absorber = e.absorber;
+        items_.push_back(std::move(it));
+    }
+    for (unsigned negative = 0; negative < bundles_.size(); ++negative)
+        build(bundles_[negative], negative, cells_per_element);
+}
+
+template <class Int, int M>
+void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
+                                     std::int64_t cells_per_element) {
+    bundle.offsets.assign(2, 0);
+    if (items_.empty()) return;
+    const Int s0 = sigma(negative, 0);
+    // The shadow of an element on the cross-section: a_j = x_j - r_j x_0 with
+    // r_j = sigma_j sigma_0, over the element's box; its bounding box is
+    // [lo_j - max(r_j x_0), hi_j - min(r_j x_0)].
+    auto shadow = [&](const Item& it, int j, Int& lo, Int& hi) {
+        const Int r = sigma(negative, j) * s0;
+        const Int x_lo = r * it.lo[0], x_hi = r * it.hi[0];
+        lo = it.lo[j] - (x_lo < x_hi ? x_hi : x_lo);
+        hi = it.hi[j] - (x_lo < x_hi ? x_lo : x_hi);
+    };
+    for (int j = 0; j < S; ++j)
+        for (std::size_t e = 0; e < items_.size(); ++e) {
+            Int lo, hi;
+            shadow(items_[e], j + 1, lo, hi);
+            if (e == 0 || lo < bundle.origin[j]) bundle.origin[j] = lo;
+            if (e == 0 || bundle.limit[j] < hi) bundle.limit[j] = hi;
+        }
+    // k cells a side with k^S >= cells_per_element * n; each side a power of two.
+    std::int64_t k = 1;
+    const std::int64_t want = cells_per_element * static_cast<std::int64_t>(items_.size());
+    while (true) {
+        std::int64_t p = 1;
+        for (int j = 0; j < S; ++j) p *= k;
+        if (p >= want || S == 0) break;
+        ++k;
+    }
+    std::int64_t total = 1;
+    for (int j = 0; j < S; ++j) {
+        const Int points = bundle.limit[j] - bundle.origin[j] + 1;
+        unsigned shift = 0;
+        while (Int(Int(k) << shift) < points) ++shift;
+        bundle.shift[j] = shift;
+        bundle.cells[j] = to_index(Int(Int(points - 1) >> shift)) + 1;
+        total *= bundle.cells[j];
+        if (bundle.reach < Int(Int(1) << shift) - 1) bundle.reach = Int(Int(1) << shift) - 1;
+    }
+
+    // Every cell an element's shadow box covers, with the element's smallest
+    // possible depth there.
+    auto for_each_cell = [&](std::uint32_t e, auto&& visit) {
+        const Item& it = items_[e];
+        std::int64_t first[M], last[M], i[M];
+        for (int j = 0; j < S; ++j) {
+            Int lo, hi;
+            shadow(it, j + 1, lo, hi);
+            first[j] = to_index(Int(Int(lo - bundle.origin[j]) >> bundle.shift[j]));
+            last[j] = to_index(Int(Int(hi - bundle.origin[j]) >> bundle.shift[j]));
+            i[j] = first[j];
+        }
+        // The element's own depth range, sigma_0 * x_0 over its box.
+        const Int d_lo = s0 * it.lo[0] < s0 * it.hi[0] ? Int(s0 * it.lo[0]) : Int(s0 * it.hi[0]);
+        const int a = it.axis;
+        while (true) {
+            std::int64_t c = 0;
+            for (int j = S - 1; j >= 0; --j) c = c * bundle.cells[j] + i[j];
+            Int key = d_lo;
+            if constexpr (S > 0)
+                if (a != 0) {
+                    // Depth sigma_a (c - a_a), over the cell's a_a in [A, A + h - 1].
+                    const Int cell_lo =
+                        bundle.origin[a - 1] + (Int(i[a - 1]) << bundle.shift[a - 1]);
+                    const Int cell_hi = cell_lo + (Int(1) << bundle.shift[a - 1]) - 1;
+                    const Int sa = sigma(negative, a);
+                    const Int d1 = sa * Int(it.lo[a] - cell_lo), d2 = sa * Int(it.lo[a] - cell_hi);
+                    const Int d = d1 < d2 ? d1 : d2;
+                    if (key < d) key = d;
+                }
+            visit(c, key);
+            int j = 0;
+            while (j < S && i[j] == last[j]) i[j] = first[j], ++j;
+            if (j >= S) break;
+            ++i[j];
+        }
+    };
+    bundle.offsets.assign(static_cast<std::size_t>(total) + 1, 0);
+    for (std::uint32_t e = 0; e < items_.size(); ++e)
+        for_each_cell(e, [&](std::int64_t c, const Int&) { ++bundle.offsets[c + 1]; });
+    for (std::size_t c = 1; c < bundle.offsets.size(); ++c)
+        bundle.offsets[c] += bundle.offsets[c - 1];
+    bundle.members.resize(bundle.offsets.back());
+    std::vector<std::uint32_t> fill(bundle.offsets.begin(), bundle.offsets.end() - 1);
+    for (std::uint32_t e = 0; e < items_.size(); ++e)
+        for_each_cell(e, [&](std::int64_t c, const Int& key) {
+            bundle.members[fill[c]++] =
+                Member{key, items_[e].lo[items_[e].axis], e, items_[e].axis};
+        });
+    for (std::size_t c = 0; c + 1 < bundle.offsets.size(); ++c)
+        std::sort(bundle.members.begin() + bundle.offsets[c],
+                  bundle.members.begin() + bundle.offsets[c + 1],
+                  [](const Member& x, const Member& y) { return x.key < y.key; });
+}
+
+template <class Int, int M>
+Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
+    Shot<Int> shot;
+    if (items_.empty()) return shot;
+    const Bundle& bundle = bundles_[negative];
+    Int s[M];
+    for (int j = 0; j < M; ++j) s[j] = sigma(negative, j);
+    std::int64_t c = 0;
+    for (int j = S - 1; j >= 0; --j) {
+        const Int a = p[j + 1] - s[j + 1] * s[0] * p[0];
+        // A line outside every shadow meets nothing.
+        if (a < bundle.origin[j] || bundle.limit[j] < a) return shot;
+        c = c * bundle.cells[j] + to_index(Int(Int(a - bundle.origin[j]) >> bundle.shift[j]));
+    }
+    const Member* first = bundle.members.data() + bundle.offsets[c];
+    const Member* last = bundle.members.data() + bundle.offsets[c + 1];
+    const Int depth = s[0] * p[0];
+    // Members whose every depth in the cell is <= depth lie behind p.
+    const Int behind = depth - bundle.reach;
+    // Cells hold a handful of members: counting them without branches beats
+    // a binary search, whose jumps the processor cannot predict.
+    if (last - first <= 16) {
+        std::ptrdiff_t skip = 0;
+        for (const Member* m = first; m != last; ++m) skip += !(behind < m->key);
+        first += skip;
+    } else {
+        first = std::upper_bound(first, last, behind,
+                                 [](const Int& x, const Member& m) { return x < m.key; });
+    }
+    for (; first != last; ++first) {
+        if (!shot.escape && depth + shot.t < first->key) break;
+        const int a = first->axis;
+        const Int t = s[a] * Int(first->offset - p[a]);
+        if (t <= 0 || (!shot.escape && shot.t < t)) continue;
+        const Item& it = items_[first->item];
+        bool inside = true;
+        for (int j = 0; j < M; ++j) {
+            const Int x = p[j] + s[j] * t;
+            inside &= static_cast<int>(!(x < it.lo[j])) & static_cast<int>(!(it.hi[j] < x));
+        }
+        if (inside) shot.record(t, a, it.absorber, first->item);
+    }
+    return shot;
+}
+
+} // namespace orthoray::lattice
