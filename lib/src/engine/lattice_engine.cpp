@@ -82,7 +82,8 @@ public:
     bool advance(Shoot&& shoot, std::uint64_t until) {
         while (true) {
             const lattice::Shot<Int> shot = shoot(s_, mirror_);
-            if (ls_.target_reachable && passes(target_, s_, shot)) return finish(Reason::hit);
+            if (ls_.target_reachable && shot.near_target && passes(target_, s_, shot))
+                return finish(Reason::hit);
             if (shot.escape) return finish(Reason::escape);
             for (int j = 0; j < M; ++j) s_.p[j] += sign<Int>(s_.negative, j) * shot.t;
             if (shot.absorber) {
@@ -108,6 +109,7 @@ public:
     }
 
     std::uint64_t reflections() const { return reflections_; }
+    const Int (&target() const)[M] { return target_; }
     Answer& answer() { return answer_; }
 
 private:
@@ -181,7 +183,8 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         // Piece tables may grow quadratic with crossings: past 64 pieces a
         // mirror on average, stay on the grid.
         begin = std::chrono::steady_clock::now();
-        const auto table = lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+        auto table = lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+        if (table && ls.target_reachable) table->mark_target(grid, run.target());
         setup.seconds += seconds_since(begin);
         if (table) {
             setup.pieces = table->size();

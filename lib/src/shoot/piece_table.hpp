@@ -54,6 +54,7 @@ public:
         std::int8_t slope; // t(u) = t0 + slope * (u - from)
         std::uint8_t flip; // normal axes of the mirrors met there
         Kind kind;
+        bool near_target; // some state of this piece starts a segment through the target
         // After reflecting here: the next mirror's pieces for the new
         // direction, stored inline so that a step needs no other lookup.
         Cursor next;
@@ -87,6 +88,7 @@ public:
         shot.escape = piece.kind == Kind::escape;
         shot.absorber = piece.kind == Kind::absorb;
         shot.flip = piece.flip;
+        shot.near_target = piece.near_target;
         shot.t = piece.t0 + Int(piece.slope) * Int(u - piece.from);
         where = piece.next;
         return shot;
@@ -104,6 +106,13 @@ public:
     }
 
     std::size_t size() const { return pieces_.size(); }
+
+    // Marks the pieces holding the states after which the ray passes
+    // `target`: for each direction d, the segment through the target in
+    // direction d starts where a shot from the target in direction -d first
+    // meets the mirrors, so at most four points on a few mirrors. Every
+    // other piece's segments miss the target, and Shot::near_target says so.
+    void mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]);
 
     // One line a piece: mirror, direction, first position, and where it goes.
     void dump(std::ostream& out) const;
@@ -246,6 +255,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                             s.escape     ? Kind::escape
                             : s.absorber ? Kind::absorb
                                          : Kind::reflect,
+                            false,
                             Cursor{}};
                 // Moving u along A moves the hit along B; t changes only when
                 // B is perpendicular to A (B's normal is A's tangent axis).
@@ -284,6 +294,21 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                     piece.next = table.at(table.next_mirror_[k], d ^ piece.flip);
             }
     return table;
+}
+
+template <class Int>
+void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]) {
+    for (unsigned d = 0; d < 4; ++d) {
+        const Shot<Int> back = grid.shoot(target, d ^ 3u);
+        if (back.escape) continue;
+        const Int q[2] = {(d & 1u) ? Int(target[0] + back.t) : Int(target[0] - back.t),
+                          (d & 2u) ? Int(target[1] + back.t) : Int(target[1] - back.t)};
+        grid.for_each_element_at(q, [&](std::uint32_t m) {
+            const Cursor where = at(m, d);
+            if (where.count == 0) return; // an absorber: no ray leaves it
+            pieces_[locate(where, q[where.tangent]) - pieces_.data()].near_target = true;
+        });
+    }
 }
 
 template <class Int>

@@ -32,6 +32,10 @@ struct Shot {
     Int t{};
     std::uint32_t mirror = 0; // one of the mirrors met (when flip != 0): index in the scene
     unsigned met = 0;         // normal axes of every element met, absorbers included
+    // False only when the shooter knows that the segment to the hit cannot
+    // contain the target (the piece tables mark the few pieces whose
+    // segments can), so that the stepper may skip its target test.
+    bool near_target = true;
 
     // Adds element `index` (normal `axis`), met at parameter `at` <= t: a
     // smaller parameter replaces what was found, an equal one joins it, so
