@@ -80,6 +80,9 @@ public:
     // reflections have been performed (then returns false).
     template <class Shoot>
     bool advance(Shoot&& shoot, std::uint64_t until) {
+        // One bound for both reasons to stop stepping.
+        const std::uint64_t stop =
+            options_.max_steps ? std::min(until, *options_.max_steps) : until;
         while (true) {
             const lattice::Shot<Int> shot = shoot(s_, mirror_);
             if (ls_.target_reachable && shot.near_target && passes(target_, s_, shot))
@@ -90,9 +93,9 @@ public:
                 if (options_.path) report();
                 return finish(Reason::absorbed);
             }
-            if (options_.max_steps && reflections_ == *options_.max_steps)
-                return finish(Reason::limit);
-            if (reflections_ == until) {
+            if (reflections_ == stop) {
+                if (options_.max_steps && reflections_ == *options_.max_steps)
+                    return finish(Reason::limit);
                 for (int j = 0; j < M; ++j) // not taken yet: undo the move
                     s_.p[j] -= sign<Int>(s_.negative, j) * shot.t;
                 return false;
