@@ -194,36 +194,42 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
 
     // Breakpoints as (mirror * 4 + direction, position) pairs in one array,
     // sorted once: far cheaper than a small vector per mirror and direction.
+    // A breakpoint found by shooting back from an event remembers it: the
+    // forward shot from there ends at that event, with nothing in between, so
+    // it needs no second walk through the grid.
+    static constexpr std::uint32_t no_event = ~std::uint32_t{0};
     struct Break {
         std::uint32_t slot;
+        std::uint32_t event; // the event the ray from here meets first, or no_event
         Int u;
         bool operator<(const Break& o) const { return slot != o.slot ? slot < o.slot : u < o.u; }
         bool operator==(const Break& o) const { return slot == o.slot && u == o.u; }
     };
     std::vector<Break> breaks;
     breaks.reserve(std::size_t{n} * 8 + events.size() * 12);
-    auto add_breaks_at = [&](const Int(&p)[2], unsigned first_d, unsigned last_d) {
+    auto add_breaks_at = [&](const Int(&p)[2], unsigned first_d, unsigned last_d,
+                             std::uint32_t event) {
         grid.for_each_element_at(p, [&](std::uint32_t m) {
             if (box[m].absorber) return;
             for (unsigned d = first_d; d <= last_d; ++d)
-                breaks.push_back(Break{m * 4 + d, p[table.tangent_[m]]});
+                breaks.push_back(Break{m * 4 + d, event, p[table.tangent_[m]]});
         });
     };
     for (std::uint32_t m = 0; m < n; ++m)
         for (unsigned d = 0; d < 4; ++d) {
             const int t = table.tangent_[m];
-            breaks.push_back(Break{m * 4 + d, box[m].lo[t]});
-            breaks.push_back(Break{m * 4 + d, box[m].hi[t]});
+            breaks.push_back(Break{m * 4 + d, no_event, box[m].lo[t]});
+            breaks.push_back(Break{m * 4 + d, no_event, box[m].hi[t]});
         }
-    for (const Point& event : events) {
-        const Int p[2] = {event[0], event[1]};
-        add_breaks_at(p, 0, 3);
+    for (std::uint32_t e = 0; e < events.size(); ++e) {
+        const Int p[2] = {events[e][0], events[e][1]};
+        add_breaks_at(p, 0, 3, no_event);
         for (unsigned d = 0; d < 4; ++d) {
             const Shot<Int> back = grid.shoot(p, d ^ 3u);
             if (back.escape) continue;
             const Int q[2] = {(d & 1u) ? Int(p[0] + back.t) : Int(p[0] - back.t),
                               (d & 2u) ? Int(p[1] + back.t) : Int(p[1] - back.t)};
-            add_breaks_at(q, d, d);
+            add_breaks_at(q, d, d, e);
         }
         if (2 * breaks.size() > max_pieces) return std::nullopt;
     }
@@ -233,21 +239,32 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
     // Resolve each piece with one forward shot, merging runs with one map.
     table.offsets_.assign(std::size_t{n} * 4 + 1, 0);
     std::size_t next_break = 0;
-    std::vector<Int> b; // the current slot's breakpoints, reused
+    std::vector<const Break*> b; // the current slot's breakpoints, reused
     for (std::uint32_t m = 0; m < n; ++m) {
         for (unsigned d = 0; d < 4; ++d) {
             table.offsets_[m * 4 + d] = static_cast<std::uint32_t>(table.pieces_.size());
             const std::uint32_t slot = m * 4 + d;
             b.clear();
             for (; next_break < breaks.size() && breaks[next_break].slot == slot; ++next_break)
-                b.push_back(breaks[next_break].u);
+                b.push_back(&breaks[next_break]);
             if (box[m].absorber) continue;
             const int tangent = table.tangent_[m];
             const std::size_t first = table.pieces_.size();
-            auto resolve = [&](const Int& u) {
-                Int p[2] = {box[m].lo[0], box[m].lo[1]};
-                p[tangent] = u;
-                const Shot<Int> s = grid.shoot(p, d);
+            auto resolve = [&](const Int& u, std::uint32_t event) {
+                Shot<Int> s;
+                if (event == no_event) {
+                    Int p[2] = {box[m].lo[0], box[m].lo[1]};
+                    p[tangent] = u;
+                    s = grid.shoot(p, d);
+                } else {
+                    const Int p[2] = {events[event][0], events[event][1]};
+                    const int normal = box[m].axis;
+                    const Int t = p[normal] < box[m].lo[normal]
+                                      ? Int(box[m].lo[normal] - p[normal])
+                                      : Int(p[normal] - box[m].lo[normal]);
+                    grid.for_each_element_at(
+                        p, [&](std::uint32_t f) { s.record(t, box[f].axis, box[f].absorber, f); });
+                }
                 Piece piece{u,
                             s.t,
                             0,
@@ -276,8 +293,9 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                 table.next_mirror_.push_back(s.mirror);
             };
             for (std::size_t i = 0; i < b.size(); ++i) {
-                resolve(b[i]);
-                if (i + 1 < b.size() && Int(b[i] + 1) < b[i + 1]) resolve(Int(b[i] + 1));
+                resolve(b[i]->u, b[i]->event);
+                if (i + 1 < b.size() && Int(b[i]->u + 1) < b[i + 1]->u)
+                    resolve(Int(b[i]->u + 1), no_event);
             }
             if (table.pieces_.size() > max_pieces) return std::nullopt;
         }
