@@ -38,6 +38,9 @@ public:
     SceneReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
     Scene read() {
+        // Rationals are not nothrow-movable, so a growing vector would copy
+        // every element on each reallocation: size it once instead.
+        scene_.elements.reserve(element_statements());
         std::size_t begin = 0;
         int line_number = 0;
         while (true) {
@@ -61,6 +64,19 @@ public:
     }
 
 private:
+    // Lines whose first word is 'mirror' or 'absorber': an upper bound on the
+    // elements the file declares.
+    std::size_t element_statements() const {
+        std::size_t count = 0;
+        for (std::size_t begin = 0; begin < text_.size();) {
+            begin = std::min(text_.find_first_not_of(" \t\r", begin), text_.size());
+            const std::string_view rest = text_.substr(begin);
+            if (rest.starts_with("mirror") || rest.starts_with("absorber")) ++count;
+            begin = std::min(text_.find('\n', begin), text_.size()) + 1;
+        }
+        return count;
+    }
+
     std::string_view text_;
     const std::string& file_;
     Scene scene_;
