@@ -50,7 +50,8 @@ LatticeScene make_lattice(const Scene& scene) {
     // D: the lcm of all denominators on active axes.
     Integer D = 1;
     auto take_denominators = [&](const Vector& x) {
-        for (int i = 0; i < out.dim; ++i) D = lcm(D, x[out.active[i]].get_den());
+        for (int i = 0; i < out.dim; ++i)
+            if (x[out.active[i]].get_den() != 1) D = lcm(D, x[out.active[i]].get_den());
     };
     take_denominators(scene.start);
     take_denominators(scene.target);
@@ -61,13 +62,14 @@ LatticeScene make_lattice(const Scene& scene) {
     }
     for (int i = 0; i < out.dim; ++i) out.scale[i] = D * L / abs_of(u[out.active[i]]);
 
+    // x * scale[i] is integral: every denominator divides D, which divides
+    // scale[i]. Computed as num * (scale / den), without a gcd.
     auto scaled = [&](const Rational& x, int i) {
-        Rational r = x * out.scale[i];
-        return Integer(r.get_num()); // integral by the choice of D
+        if (x.get_den() == 1) return Integer(x.get_num() * out.scale[i]);
+        return Integer(x.get_num() * (out.scale[i] / x.get_den()));
     };
     auto track = [&](const Integer& x) {
-        Integer a = abs_of(x);
-        if (a > out.magnitude) out.magnitude = a;
+        if (mpz_cmpabs(x.get_mpz_t(), out.magnitude.get_mpz_t()) > 0) out.magnitude = abs_of(x);
     };
     for (int i = 0; i < out.dim; ++i) {
         out.start[i] = scaled(scene.start[out.active[i]], i);
@@ -77,6 +79,7 @@ LatticeScene make_lattice(const Scene& scene) {
     out.target_reachable = out.to_lattice(scene.target, out.target);
     if (out.target_reachable)
         for (int i = 0; i < out.dim; ++i) track(out.target[i]);
+    out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
         if (!spans_start(e)) continue;
         LatticeElement le;
