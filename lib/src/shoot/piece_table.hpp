@@ -233,7 +233,19 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         }
         if (2 * breaks.size() > max_pieces) return std::nullopt;
     }
-    std::sort(breaks.begin(), breaks.end());
+    // Bucket by slot (a counting sort over the 4n slots), then sort each
+    // slot's few positions: cheaper than one comparison sort of everything.
+    {
+        std::vector<std::uint32_t> start(std::size_t{n} * 4 + 1, 0);
+        for (const Break& k : breaks) ++start[k.slot + 1];
+        for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+        std::vector<Break> bucketed(breaks.size());
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (Break& k : breaks) bucketed[fill[k.slot]++] = std::move(k);
+        for (std::size_t i = 0; i + 1 < start.size(); ++i)
+            std::sort(bucketed.begin() + start[i], bucketed.begin() + start[i + 1]);
+        breaks = std::move(bucketed);
+    }
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
 
     // Resolve each piece with one forward shot, merging runs with one map.
