@@ -153,10 +153,11 @@ Command add_solve(CLI::App& app) {
         ->check(CLI::IsMember(names(arithmetics)));
     cmd->add_option(
            "--shooter", args->shooter,
-           "how the lattice engine finds the next hit: auto (default: the uniform grid, "
-           "or a bounding volume hierarchy when elements cluster; in 2D, piece tables "
-           "once max(16384, 64 n) reflections have not answered), grid, bvh, or pieces (2D piece "
-           "tables from the start)")
+           "how the lattice engine finds the next hit: auto (default: in 3D the "
+           "cross-section grid, in 2D the uniform grid and then piece tables once "
+           "max(16384, 64 n) reflections have not answered; a bounding volume hierarchy when "
+           "elements cluster), grid (uniform grid), bvh, pieces (2D piece tables from the "
+           "start) or section (cross-section grid)")
         ->check(CLI::IsMember(names(shooters)));
     return [args, max_steps] { return run(*args, max_steps); };
 }

@@ -3,6 +3,7 @@
 // elements, absorbers), rays from corners, planes, walls and outside the
 // scene, along whole trajectories, on all integer types and at magnitudes
 // near each type's bound.
+#include "orthoray/solve.hpp"
 #include "shoot/cross_section_grid.hpp"
 #include "support/brute_force_shot.hpp"
 #include "support/random_lattice.hpp"
@@ -103,4 +104,41 @@ TEST_CASE("cross-section grid of an empty scene lets every ray escape", "[sectio
     const CrossSectionGrid<std::int64_t, 3> grid(ls);
     const std::int64_t p[3] = {0, 0, 0};
     for (unsigned negative = 0; negative < 8; ++negative) CHECK(grid.shoot(p, negative).escape);
+}
+
+namespace {
+
+// A closed 3D box of side 10^4 with `n` small mirrors, either spread over
+// the box or crowded into one corner of side 100.
+Scene mirror_box(int n, bool crowded) {
+    auto q = [](long v) { return Rational(Integer(v)); };
+    Scene scene;
+    scene.dim = 3;
+    for (int axis = 0; axis < 3; ++axis)
+        for (long offset : {0L, 10000L})
+            scene.add_mirror(axis, q(offset), {{q(0), q(10000)}, {q(0), q(10000)}});
+    std::mt19937_64 rng(7);
+    const int side = crowded ? 100 : 10000;
+    for (int i = 0; i < n; ++i) {
+        const int axis = test::pick(rng, 0, 2);
+        std::vector<std::pair<Rational, Rational>> extent;
+        for (int j = 0; j < 2; ++j) {
+            const int lo = test::pick(rng, 1, side - 20);
+            extent.emplace_back(q(lo), q(lo + test::pick(rng, 1, 19)));
+        }
+        scene.add_mirror(axis, q(test::pick(rng, 1, side - 1)), extent);
+    }
+    scene.start = {q(5001), q(5003), q(5007)};
+    scene.direction = {q(3), q(5), q(7)};
+    scene.target = {q(1), q(2), q(3)};
+    return scene;
+}
+
+} // namespace
+
+TEST_CASE("3D solves use the cross-section grid unless elements crowd", "[section]") {
+    SolveOptions options;
+    options.max_steps = 1000;
+    CHECK(solve(mirror_box(2000, false), options).shooter == "section");
+    CHECK(solve(mirror_box(2000, true), options).shooter == "bvh");
 }
