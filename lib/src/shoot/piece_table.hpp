@@ -68,14 +68,13 @@ public:
     // The pieces of mirror `element` for leaving it in direction `negative`
     // (bit i set: moving towards -infinity on axis i), sorted by `from`.
     std::span<const Piece> pieces(std::uint32_t element, unsigned negative) const {
-        return {pieces_.data() + offsets_[element * 4 + negative],
-                pieces_.data() + offsets_[element * 4 + negative + 1]};
+        const Cursor& c = slots_[element * 4 + negative];
+        return {pieces_.data() + c.begin, c.count};
     }
 
     // The pieces for leaving mirror `element` in direction `negative`.
     Cursor at(std::uint32_t element, unsigned negative) const {
-        const std::uint32_t begin = offsets_[element * 4 + negative];
-        return {begin, offsets_[element * 4 + negative + 1] - begin, tangent_[element]};
+        return slots_[element * 4 + negative];
     }
 
     // The next hit from point p, as the grid would give it; `where` must
@@ -138,7 +137,7 @@ private:
 
     std::vector<Piece> pieces_;
     std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)
-    std::vector<std::uint32_t> offsets_;     // (element * 4 + direction) -> first piece
+    std::vector<Cursor> slots_;              // (element * 4 + direction) -> its pieces
     std::vector<std::uint8_t> tangent_;      // the axis a position on the element runs along
 };
 
@@ -184,8 +183,20 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                 events.push_back(Point{v.lo[0], h.lo[1]});
         });
     }
-    std::sort(events.begin(), events.end());
-    events.erase(std::unique(events.begin(), events.end()), events.end());
+    // Events in Z-order of their grid cells: consecutive reverse shots then
+    // walk nearby cells, which matters once the grid outgrows the cache.
+    {
+        std::vector<std::pair<std::uint64_t, Point>> keyed;
+        keyed.reserve(events.size());
+        for (const Point& p : events) {
+            const Int q[2] = {p[0], p[1]};
+            keyed.emplace_back(grid.locality_key(q), p);
+        }
+        std::sort(keyed.begin(), keyed.end());
+        keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
+        events.clear();
+        for (auto& [key, p] : keyed) events.push_back(p);
+    }
 
     PieceTable table;
     table.tangent_.resize(n);
@@ -235,8 +246,8 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
     }
     // Bucket by slot (a counting sort over the 4n slots), then sort each
     // slot's few positions: cheaper than one comparison sort of everything.
+    std::vector<std::uint32_t> start(std::size_t{n} * 4 + 1, 0);
     {
-        std::vector<std::uint32_t> start(std::size_t{n} * 4 + 1, 0);
         for (const Break& k : breaks) ++start[k.slot + 1];
         for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
         std::vector<Break> bucketed(breaks.size());
@@ -246,19 +257,26 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
             std::sort(bucketed.begin() + start[i], bucketed.begin() + start[i + 1]);
         breaks = std::move(bucketed);
     }
-    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+
+    // Mirrors are resolved, and their pieces laid out, in Z-order of their
+    // low corners: the forward shots then walk nearby cells, and the ray,
+    // whose next mirror is a spatial neighbour, finds its next pieces nearby.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order(n);
+    for (std::uint32_t m = 0; m < n; ++m) order[m] = {grid.locality_key(box[m].lo), m};
+    std::sort(order.begin(), order.end());
 
     // Resolve each piece with one forward shot, merging runs with one map.
-    table.offsets_.assign(std::size_t{n} * 4 + 1, 0);
-    std::size_t next_break = 0;
+    table.slots_.resize(std::size_t{n} * 4);
     std::vector<const Break*> b; // the current slot's breakpoints, reused
-    for (std::uint32_t m = 0; m < n; ++m) {
+    for (const auto& [key, m] : order) {
         for (unsigned d = 0; d < 4; ++d) {
-            table.offsets_[m * 4 + d] = static_cast<std::uint32_t>(table.pieces_.size());
             const std::uint32_t slot = m * 4 + d;
+            Cursor& range = table.slots_[slot];
+            range.begin = static_cast<std::uint32_t>(table.pieces_.size());
+            range.tangent = table.tangent_[m];
             b.clear();
-            for (; next_break < breaks.size() && breaks[next_break].slot == slot; ++next_break)
-                b.push_back(&breaks[next_break]);
+            for (std::uint32_t k = start[slot]; k < start[slot + 1]; ++k)
+                if (b.empty() || !(*b.back() == breaks[k])) b.push_back(&breaks[k]);
             if (box[m].absorber) continue;
             const int tangent = table.tangent_[m];
             const std::size_t first = table.pieces_.size();
@@ -309,16 +327,17 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                 if (i + 1 < b.size() && Int(b[i]->u + 1) < b[i + 1]->u)
                     resolve(Int(b[i]->u + 1), no_event);
             }
+            range.count = static_cast<std::uint32_t>(table.pieces_.size()) - range.begin;
             if (table.pieces_.size() > max_pieces) return std::nullopt;
         }
     }
-    table.offsets_[std::size_t{n} * 4] = static_cast<std::uint32_t>(table.pieces_.size());
 
     // Link each reflecting piece to the pieces the ray continues from.
     for (std::uint32_t m = 0; m < n; ++m)
         for (unsigned d = 0; d < 4; ++d)
-            for (std::uint32_t k = table.offsets_[m * 4 + d]; k < table.offsets_[m * 4 + d + 1];
-                 ++k) {
+            for (std::uint32_t k = table.slots_[m * 4 + d].begin,
+                               end = k + table.slots_[m * 4 + d].count;
+                 k < end; ++k) {
                 Piece& piece = table.pieces_[k];
                 if (piece.kind == Kind::reflect)
                     piece.next = table.at(table.next_mirror_[k], d ^ piece.flip);

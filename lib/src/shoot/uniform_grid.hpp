@@ -82,6 +82,21 @@ public:
 
     std::size_t size() const { return items_.size(); }
 
+    // The Z-order (Morton) index of the cell holding p, clamped to the grid:
+    // points with close keys lie in nearby cells, so work sorted by it walks
+    // the grid (and whatever is laid out in that order) with few cache misses.
+    std::uint64_t locality_key(const Int (&p)[M]) const {
+        std::uint64_t key = 0;
+        if (items_.empty()) return key;
+        for (int j = 0; j < M; ++j) {
+            const std::int64_t i = std::clamp<std::int64_t>(
+                to_index(floor_div(Int(p[j] - lo_[j]), h_[j])), 0, n_[j] - 1);
+            for (int bit = 0; bit < 64 / M; ++bit)
+                key |= ((static_cast<std::uint64_t>(i) >> bit) & 1u) << (bit * M + j);
+        }
+        return key;
+    }
+
     // The most elements any one cell holds: large when elements cluster in a
     // small part of the box, where a grid degrades and a hierarchy does not.
     std::size_t fullest_cell() const {
