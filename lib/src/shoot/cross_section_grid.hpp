@@ -79,6 +79,7 @@ private:
         Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
         std::uint8_t axis;
         bool absorber;
+        std::uint32_t index; // in the scene
     };
     // A registration of an element in a cell. The plane's axis and offset are
     // copied in, so that members met behind p or beyond the best hit so far
@@ -121,7 +122,40 @@ CrossSectionGrid<Int, M>::CrossSectionGrid(const LatticeScene& scene,
         }
         it.axis = static_cast<std::uint8_t>(e.axis);
         it.absorber = e.absorber;
+        it.index = static_cast<std::uint32_t>(items_.size());
         items_.push_back(std::move(it));
+    }
+    // Elements in Z-order of their low corners: a cell's members, and the
+    // ray's successive hits, are spatial neighbours, so they then share cache
+    // lines instead of being scattered over the scene's declaration order.
+    if (!items_.empty()) {
+        constexpr int bits = 64 / M;
+        Integer lo[M], extent[M];
+        for (int j = 0; j < M; ++j) {
+            lo[j] = scene.elements[0].lo[j];
+            Integer hi = scene.elements[0].hi[j];
+            for (const LatticeElement& e : scene.elements) {
+                if (e.lo[j] < lo[j]) lo[j] = e.lo[j];
+                if (hi < e.hi[j]) hi = e.hi[j];
+            }
+            extent[j] = hi - lo[j] + 1;
+        }
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> order(items_.size());
+        for (std::uint32_t e = 0; e < items_.size(); ++e) {
+            std::uint64_t key = 0;
+            for (int j = 0; j < M; ++j) {
+                // floor((lo - min) * 2^bits / extent) < 2^bits, exactly.
+                const Integer q = ((scene.elements[e].lo[j] - lo[j]) << bits) / extent[j];
+                const std::uint64_t i = q.get_ui();
+                for (int bit = 0; bit < bits; ++bit) key |= ((i >> bit) & 1u) << (bit * M + j);
+            }
+            order[e] = {key, e};
+        }
+        std::sort(order.begin(), order.end());
+        std::vector<Item> sorted;
+        sorted.reserve(items_.size());
+        for (const auto& [key, e] : order) sorted.push_back(std::move(items_[e]));
+        items_ = std::move(sorted);
     }
     for (unsigned negative = 0; negative < bundles_.size(); ++negative)
         build(bundles_[negative], negative, cells_per_element);
@@ -264,7 +298,7 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
             const Int x = p[j] + s[j] * t;
             inside &= static_cast<int>(!(x < it.lo[j])) & static_cast<int>(!(it.hi[j] < x));
         }
-        if (inside) shot.record(t, a, it.absorber, first->item);
+        if (inside) shot.record(t, a, it.absorber, it.index);
     }
     return shot;
 }
