@@ -1,0 +1,162 @@
+// The state-count bounds: hand-counted values, and the theorem that no
+// trajectory visits more states than either bound, on every generated
+// instance and on the property tests' random scenes.
+#include "orthoray/bounds.hpp"
+#include "orthoray/generate.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/solve.hpp"
+#include "support/random_scene.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+using namespace orthoray;
+
+namespace {
+
+// visited <= refined <= lattice for one scene, when it is decided.
+void check_theorem(const Scene& scene, std::uint64_t max_steps = 2'000'000) {
+    SolveOptions o;
+    o.max_steps = max_steps;
+    const Answer a = solve(scene, o);
+    const StateBounds b = compute_bounds(scene, false);
+    const std::optional<Integer> visited = states_visited(a);
+    INFO(write_scene(scene) << "answer " << to_string(a.reason) << ' ' << a.reflections
+                            << ", lattice " << b.lattice_states << ", refined "
+                            << b.refined_states);
+    CHECK(b.refined_states <= b.lattice_states);
+    if (!visited) return;
+    CHECK(*visited <= b.refined_states);
+}
+
+} // namespace
+
+TEST_CASE("bounds of the 3 x 5 box, counted by hand", "[bounds]") {
+    BoxFamily f;
+    f.sides = {3, 5};
+    const StateBounds b = compute_bounds(generate_box(f).scene);
+    CHECK(b.dim == 2);
+    CHECK(b.scale[0] == 1);
+    CHECK(b.scale[1] == 1);
+    CHECK(b.elements == 4);
+    // The perimeter has 2 (3 + 5) = 16 integer points (the corners once).
+    CHECK(b.points == 16);
+    CHECK(b.points_exact);
+    CHECK(b.lattice_states == 64);
+    // G = 2 gcd(3, 5) = 2: only the 8 points with x + y even, in each direction.
+    CHECK(b.line_modulus[0] == 2);
+    CHECK(b.refined_states == 32);
+    CHECK(b.magnitude_bits == 3);
+    REQUIRE(b.pieces);
+    CHECK(*b.pieces > 0);
+}
+
+TEST_CASE("the line modulus uses offset differences, so it does not depend on the origin",
+          "[bounds]") {
+    // The box [10, 16] x [4, 10]: offsets differ by 6 on both axes, G = 12.
+    Scene s;
+    s.dim = 2;
+    s.add_mirror(0, 10, {{4, 10}});
+    s.add_mirror(0, 16, {{4, 10}});
+    s.add_mirror(1, 4, {{10, 16}});
+    s.add_mirror(1, 10, {{10, 16}});
+    s.start = {11, 5, 0};
+    s.direction = {1, 1, 0};
+    s.target = {0, 0, 0};
+    const StateBounds b = compute_bounds(s);
+    CHECK(b.points == 24);
+    CHECK(b.line_modulus[0] == 12);
+    // d = sx (x - 10) - sy (y - 4) = 0 (mod 12) at the start; on each side and
+    // direction it leaves 1 residue of 12 of the 7 positions.
+    CHECK(b.refined_states < b.lattice_states / 4);
+    check_theorem(s);
+}
+
+TEST_CASE("overlapping and crossing mirrors count each point once in 2D", "[bounds]") {
+    Scene s;
+    s.dim = 2;
+    s.add_mirror(0, 0, {{0, 4}});
+    s.add_mirror(0, 0, {{2, 6}});  // overlaps the first: the union is y in [0, 6]
+    s.add_mirror(1, 3, {{-2, 2}}); // crosses x = 0 at (0, 3)
+    s.start = {1, 0, 0};
+    s.direction = {1, 1, 0};
+    const StateBounds b = compute_bounds(s);
+    CHECK(b.points == 7 + 5 - 1);
+    CHECK(b.points_exact);
+}
+
+TEST_CASE("3D bounds sum per element", "[bounds]") {
+    BoxFamily f;
+    f.sides = {2, 3, 4};
+    const StateBounds b = compute_bounds(generate_box(f).scene);
+    CHECK(b.dim == 3);
+    CHECK_FALSE(b.points_exact);
+    CHECK(b.points == 2 * (4 * 5 + 3 * 5 + 3 * 4));
+    CHECK(b.lattice_states == 8 * b.points);
+    CHECK(b.refined_states < b.lattice_states);
+    CHECK_FALSE(b.pieces);
+}
+
+TEST_CASE("states_visited counts reflection states", "[bounds]") {
+    Answer a;
+    a.reason = Reason::cycle;
+    a.reflections = 10;
+    CHECK(*states_visited(a) == 10);
+    a.reason = Reason::absorbed;
+    CHECK(*states_visited(a) == 11);
+    a.reason = Reason::limit;
+    CHECK_FALSE(states_visited(a));
+}
+
+TEST_CASE("no orbit exceeds the bounds: every family", "[bounds]") {
+    for (int m = 1; m <= 9; ++m)
+        for (int n = 1; n <= 9; ++n)
+            for (auto t : {BoxFamily::Target::reached, BoxFamily::Target::generic}) {
+                BoxFamily f;
+                f.sides = {m, n};
+                f.target = t;
+                check_theorem(generate_box(f).scene);
+            }
+    for (int a = 1; a <= 4; ++a)
+        for (int c = 1; c <= 4; ++c) {
+            BoxFamily f;
+            f.sides = {a, 3, c};
+            f.target = BoxFamily::Target::far;
+            check_theorem(generate_box(f).scene);
+        }
+    for (unsigned k = 1; k <= 12; ++k)
+        check_theorem(generate_coprime_box(k, BoxFamily::Target::far).scene);
+    for (unsigned k = 2; k <= 5; ++k)
+        check_theorem(generate_coprime_cuboid(k, BoxFamily::Target::far).scene);
+    for (int p = 1; p <= 8; ++p)
+        for (int q = -8; q <= 8; ++q)
+            if (q != 0) check_theorem(generate_square(p, q).scene);
+    for (int length = 1; length <= 30; length += 7)
+        check_theorem(generate_hallway(length, Rational(2, 3)).scene);
+    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+        RandomFamily f;
+        f.dim = seed % 2 ? 2 : 3;
+        f.mirrors = static_cast<std::int64_t>(seed % 15);
+        f.range = 30;
+        f.denominator = static_cast<std::int64_t>(seed % 3) + 1;
+        f.absorbers = seed % 4 == 0 ? Rational(1, 5) : Rational(0);
+        f.box = seed % 3 != 0;
+        f.direction_size = 3;
+        f.seed = seed;
+        if (seed % 2 == 0) f.target_after = 7;
+        check_theorem(generate_random(f).scene);
+    }
+}
+
+TEST_CASE("no orbit exceeds the bounds: the property tests' random scenes", "[bounds]") {
+    std::mt19937_64 rng(4242);
+    for (int i = 0; i < 400; ++i) {
+        test::RandomSceneShape shape;
+        shape.dim = i % 2 ? 3 : 2;
+        shape.max_denominator = i % 3 + 1;
+        Scene s = test::random_scene(rng, shape);
+        s.target = test::random_point(rng, shape);
+        check_theorem(s);
+    }
+}
