@@ -1,9 +1,10 @@
 // The instance families: byte-for-byte determinism, and every closed-form or
-// constructed expectation held against the solver over many parameters.
+// constructed expectation held against the solver over many parameters (and
+// every instance within the state-count bounds).
+#include "orthoray/bounds.hpp"
 #include "orthoray/generate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
-#include "support/run_cli.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -37,6 +38,10 @@ void check_expectation(const GeneratedScene& g, bool with_reference = false) {
     const Answer a = solve(scene);
     CHECK(to_string(a.reason) == std::string(to_string(expect->reason)));
     CHECK(a.reflections == expect->reflections);
+    // The theorem of docs/bounds.md, on every instance generated here too.
+    const StateBounds bounds = compute_bounds(scene, false);
+    CHECK(*states_visited(a) <= bounds.refined_states);
+    CHECK(bounds.refined_states <= bounds.lattice_states);
     if (with_reference) {
         SolveOptions o;
         o.engine = Engine::reference;
