@@ -117,6 +117,17 @@ std::vector<Instance> instances(bool quick) {
     for (unsigned k = 2; k <= top; k += 2)
         out.push_back({"coprime-box", k, 0,
                        [k] { return generate_coprime_box(k, BoxFamily::Target::far).scene; }});
+    // The plain box family with sides 3^k x 2^k from the corner and the
+    // generic target: coprime sides of unequal bit sizes.
+    for (unsigned k = 1; k <= (quick ? 8u : 16u); ++k)
+        out.push_back({"box", k, 0, [k] {
+                           BoxFamily f;
+                           Integer three_k;
+                           mpz_ui_pow_ui(three_k.get_mpz_t(), 3, k);
+                           f.sides = {three_k, power_of_two(k)};
+                           f.target = BoxFamily::Target::generic;
+                           return generate_box(f).scene;
+                       }});
     for (unsigned k = 2; k <= (quick ? 5u : 11u); ++k)
         out.push_back({"coprime-cuboid", k, 0,
                        [k] { return generate_coprime_cuboid(k, BoxFamily::Target::far).scene; },

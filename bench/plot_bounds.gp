@@ -10,8 +10,10 @@ set format x "10^{%T}"
 set format y "10^{%T}"
 set key top left box opaque
 set grid
+# The fifth colour of the default palette (yellow) is too pale on white.
+set linetype 5 lc rgb "#404040"
 csv = "bench/results/bounds.csv"
-structured = "coprime-box coprime-cuboid square hallway"
+structured = "box coprime-box coprime-cuboid square hallway"
 random = "random-2d random-3d"
 pick(col, f) = strcol(1) eq f ? column(col) : 1/0
 
