@@ -513,13 +513,14 @@ TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate]"
              "generate box --sides 3 5 --start 1 1 1",    // a 3D start in a 2D box
              "generate box --sides 3 5 --target nowhere", // not a target kind
              "generate box --sides 3 5 --target far --target-point 1 1",
-             "generate random --absorbers x",      // not a number
-             "generate random --absorbers 3/2",    // not a fraction in [0, 1]
-             "generate random --bits 3 --range 9", // two ways to say one thing
-             "generate random --dim 4",            // no such dimension
-             "generate square --direction 0 1",    // a zero component
-             "generate hallway --slope -1",        // a negative slope
-             "generate coprime-box --k 0",         // k too small
+             "generate random --absorbers x",                       // not a number
+             "generate random --absorbers 3/2",                     // not a fraction in [0, 1]
+             "generate random --absorbers 1/100000000000000000000", // a huge denominator
+             "generate random --bits 3 --range 9",                  // two ways to say one thing
+             "generate random --dim 4",                             // no such dimension
+             "generate square --direction 0 1",                     // a zero component
+             "generate hallway --slope -1",                         // a negative slope
+             "generate coprime-box --k 0",                          // k too small
          }) {
         INFO("orthoray " << args);
         const CliResult r = run_cli(args);
@@ -555,6 +556,11 @@ TEST_CASE("bounds prints the lattice and refined bounds", "[cli][bounds]") {
     CHECK(j["line_modulus"] == nlohmann::json::array({2}));
     CHECK(j["refined_states"] == 32);
     CHECK(j["pieces"].is_number_integer());
+
+    const nlohmann::json bare =
+        parse_json(run_cli("bounds --json --no-pieces " + quote(instance(box_corner))).out);
+    CHECK_FALSE(bare.contains("pieces"));
+    CHECK(bare["refined_states"] == 32);
 
     const CliResult text = run_cli("bounds " + quote(instance(box_corner)));
     CHECK(text.status == 0);

@@ -51,8 +51,9 @@ void check(const RandomFamily& f) {
     if (f.dim != 2 && f.dim != 3) throw std::invalid_argument("the dimension must be 2 or 3");
     if (f.mirrors < 0 || f.mirrors > 1'000'000)
         throw std::invalid_argument("the number of mirrors must be in [0, 10^6]");
-    if (f.absorbers < 0 || f.absorbers > 1)
-        throw std::invalid_argument("the absorber fraction must be in [0, 1]");
+    if (f.absorbers < 0 || f.absorbers > 1 || f.absorbers.get_den() > (1 << 20))
+        throw std::invalid_argument(
+            "the absorber fraction must be in [0, 1], with a denominator up to 2^20");
     if (f.denominator < 1 || f.denominator > (std::int64_t{1} << 20))
         throw std::invalid_argument("the denominator bound must be in [1, 2^20]");
     if (f.range < 2 || f.range > (std::int64_t{1} << 40))
