@@ -511,6 +511,7 @@ TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate]"
              "generate box --sides 3",                    // one side
              "generate box --sides 3 0",                  // a zero side
              "generate box --sides 3 5 --start 1 1 1",    // a 3D start in a 2D box
+             "generate box --sides 3 5 --direction 0 0",  // no direction
              "generate box --sides 3 5 --target nowhere", // not a target kind
              "generate box --sides 3 5 --target far --target-point 1 1",
              "generate random --absorbers x",                       // not a number

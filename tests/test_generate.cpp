@@ -129,6 +129,9 @@ TEST_CASE("box with a given start or target has no expectation", "[generate]") {
     f.target = BoxFamily::Target::point;
     f.target_point = Vector{1, 1, 0};
     CHECK_FALSE(generate_box(f).expect);
+    f.direction = Vector{0, 0, 0};
+    CHECK_THROWS_AS(generate_box(f), std::invalid_argument);
+    f.direction.reset();
     f.sides = {4, 0};
     CHECK_THROWS_AS(generate_box(f), std::invalid_argument);
 }

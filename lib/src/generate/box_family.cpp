@@ -71,6 +71,8 @@ GeneratedScene generate_box(const BoxFamily& f) {
     scene.dim = dim;
     std::vector<Rational> sides(f.sides.begin(), f.sides.end());
     generate::add_box_faces(scene, sides);
+    if (f.direction && (*f.direction)[0] == 0 && (*f.direction)[1] == 0 && (*f.direction)[2] == 0)
+        throw std::invalid_argument("the direction must not be 0");
     const bool from_corner = !f.start && !f.direction;
     for (int j = 0; j < dim; ++j) {
         scene.start[j] = f.start ? (*f.start)[j] : Rational(0);
