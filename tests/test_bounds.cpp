@@ -5,10 +5,15 @@
 #include "orthoray/generate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "orthoray/state_graph.hpp"
+
+#include "lattice/lattice_scene.hpp"
 #include "support/random_scene.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <optional>
+#include <set>
 #include <vector>
 
 using namespace orthoray;
@@ -159,4 +164,100 @@ TEST_CASE("no orbit exceeds the bounds: the property tests' random scenes", "[bo
         s.target = test::random_point(rng, shape);
         check_theorem(s);
     }
+}
+
+namespace {
+
+// Every (integer point on an element, direction) of a 2D lattice scene, one
+// by one: the brute-force count the closed formulas of state_bounds.cpp must
+// match. The invariant is evaluated from its definition (docs/bounds.md),
+// with the origin at the smallest mirror offset of each axis rather than the
+// first, which must not matter.
+struct BruteCount {
+    Integer states, refined;
+};
+
+BruteCount brute_force_2d(const Scene& scene) {
+    const lattice::LatticeScene ls = lattice::make_lattice(scene);
+    REQUIRE(ls.dim == 2);
+    std::array<std::optional<Integer>, 2> origin;
+    for (const auto& e : ls.elements)
+        if (!e.absorber && (!origin[e.axis] || e.lo[e.axis] < *origin[e.axis]))
+            origin[e.axis] = e.lo[e.axis];
+    std::array<Integer, 2> g;
+    for (const auto& e : ls.elements)
+        if (!e.absorber)
+            mpz_gcd(g[e.axis].get_mpz_t(), g[e.axis].get_mpz_t(),
+                    Integer(e.lo[e.axis] - *origin[e.axis]).get_mpz_t());
+    Integer G;
+    mpz_gcd(G.get_mpz_t(), g[0].get_mpz_t(), g[1].get_mpz_t());
+    G *= 2;
+    auto invariant = [&](const Integer& x, const Integer& y, unsigned s) {
+        const int sx = s & 1u ? -1 : 1, sy = s & 2u ? -1 : 1;
+        return Integer(sx * (x - origin[0].value_or(0)) - sy * (y - origin[1].value_or(0)));
+    };
+    const Integer start = invariant(ls.start[0], ls.start[1], ls.start_direction);
+    std::set<std::pair<std::pair<Integer, Integer>, unsigned>> all;
+    for (const auto& e : ls.elements)
+        for (Integer x = e.lo[0]; x <= e.hi[0]; ++x)
+            for (Integer y = e.lo[1]; y <= e.hi[1]; ++y)
+                for (unsigned s = 0; s < 4; ++s) all.insert({{x, y}, s});
+    BruteCount count;
+    count.states = static_cast<unsigned long>(all.size());
+    for (const auto& [p, s] : all) {
+        const Integer d = invariant(p.first, p.second, s) - start;
+        if (G == 0 ? d == 0 : Integer(d % G) == 0) ++count.refined;
+    }
+    return count;
+}
+
+} // namespace
+
+TEST_CASE("2D bounds equal a brute-force count of the states", "[bounds]") {
+    std::mt19937_64 rng(77);
+    int compared = 0;
+    for (int i = 0; i < 300; ++i) {
+        test::RandomSceneShape shape;
+        shape.max_denominator = i % 2 + 1;
+        shape.max_direction = 2;
+        Scene s = test::random_scene(rng, shape);
+        if (lattice::make_lattice(s).dim != 2) continue;
+        const BruteCount brute = brute_force_2d(s);
+        const StateBounds b = compute_bounds(s, false);
+        INFO(write_scene(s));
+        CHECK(b.lattice_states == brute.states);
+        CHECK(b.refined_states == brute.refined);
+        ++compared;
+    }
+    CHECK(compared > 100);
+}
+
+TEST_CASE("the state graph's states fit the lattice bound", "[bounds]") {
+    // explore_state_graph (Boost.Graph) enumerates the mirror states on its own;
+    // it leaves absorbers out, so its count is at most the bound (equal in
+    // 2D without absorbers), and the states reachable from the start are at
+    // most the refined bound.
+    std::mt19937_64 rng(78);
+    int explored = 0;
+    for (int i = 0; i < 200; ++i) {
+        test::RandomSceneShape shape;
+        shape.dim = i % 2 ? 3 : 2;
+        shape.max_denominator = 1;
+        Scene s = test::random_scene(rng, shape);
+        s.target = test::random_point(rng, shape);
+        const std::optional<StateGraphReport> graph = explore_state_graph(s, 20'000);
+        if (!graph) continue;
+        const StateBounds b = compute_bounds(s, false);
+        INFO(write_scene(s));
+        bool absorbers = false;
+        for (const Element& e : s.elements)
+            absorbers = absorbers || e.kind == ElementKind::absorber;
+        if (b.dim == 2 && !absorbers)
+            CHECK(Integer(static_cast<unsigned long>(graph->states)) == b.lattice_states);
+        else
+            CHECK(Integer(static_cast<unsigned long>(graph->states)) <= b.lattice_states);
+        CHECK(Integer(static_cast<unsigned long>(graph->reachable)) <= b.refined_states);
+        ++explored;
+    }
+    CHECK(explored > 100);
 }
