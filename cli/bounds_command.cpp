@@ -44,7 +44,6 @@ void print_json(const StateBounds& b) {
     std::cout << "],\"elements\":" << b.elements << ",\"input_bits\":" << b.input_bits
               << ",\"magnitude_bits\":" << b.magnitude_bits << ",\"state_bits\":" << b.state_bits
               << ",\"points\":" << b.points.get_str()
-              << ",\"points_exact\":" << (b.points_exact ? "true" : "false")
               << ",\"lattice_states\":" << b.lattice_states.get_str() << ",\"line_modulus\":[";
     const int pairs = b.dim * (b.dim - 1) / 2;
     for (int p = 0; p < pairs; ++p)
@@ -61,8 +60,7 @@ void print_text(const StateBounds& b) {
     std::printf("input bits       %zu\n", b.input_bits);
     std::printf("magnitude bits   %zu (largest |lattice coordinate|)\n", b.magnitude_bits);
     std::printf("state bits       %zu\n", b.state_bits);
-    std::printf("lattice points   %s%s\n", b.points.get_str().c_str(),
-                b.points_exact ? "" : " (upper bound: summed per element)");
+    std::printf("lattice points   %s (on the elements, each once)\n", b.points.get_str().c_str());
     std::printf("lattice states   %s (points * 2^%d)\n", b.lattice_states.get_str().c_str(), b.dim);
     std::printf("line modulus     %s\n", moduli_text(b).c_str());
     std::printf("refined states   %s\n", b.refined_states.get_str().c_str());

@@ -21,7 +21,6 @@ struct StateBounds {
     std::size_t magnitude_bits = 0; // bits of the largest |lattice coordinate|
     std::size_t state_bits = 0;     // bits of one lattice state: M signed coordinates + M signs
     Integer points;                 // integer points on the elements, each counted once
-    bool points_exact = true;       // false: points is an upper bound (3D: summed per element)
     Integer lattice_states;         // points * 2^M: no trajectory visits more states
     std::array<Integer, 3> line_modulus; // 2D: G of the line invariant; 3D: G_xy, G_xz, G_yz
     Integer refined_states;              // states that also keep the line invariant of the start
