@@ -62,6 +62,10 @@ void check(const RandomFamily& f) {
         throw std::invalid_argument("the direction size must be in [1, 2^40]");
     if (f.target_after && (*f.target_after < 0 || *f.target_after > 1'000'000))
         throw std::invalid_argument("the target's segment must be in [0, 10^6]");
+    // The reference tracer scans every element at every reflection.
+    if (f.target_after && (*f.target_after + 1) * (f.mirrors + 6) > 1'000'000'000)
+        throw std::invalid_argument("tracing K reflections among this many mirrors would take "
+                                    "too long: (K + 1) * mirrors must stay below 10^9");
 }
 
 } // namespace
