@@ -22,16 +22,6 @@ void add_box(Scene& scene, std::int64_t side) {
             scene.add_mirror(axis, whole(offset), Extent(scene.dim - 1, {whole(0), whole(side)}));
 }
 
-void add_rectangle_box(Scene& scene, const std::int64_t (&side)[3]) {
-    for (int axis = 0; axis < scene.dim; ++axis)
-        for (std::int64_t offset : {std::int64_t{0}, side[axis]}) {
-            Extent extent;
-            for (int j = 0; j < scene.dim; ++j)
-                if (j != axis) extent.emplace_back(whole(0), whole(side[j]));
-            scene.add_mirror(axis, whole(offset), extent);
-        }
-}
-
 bool on_element(const Scene& scene, const std::int64_t (&p)[3]) {
     for (const Element& e : scene.elements) {
         bool inside = true;
@@ -47,29 +37,6 @@ void set_point(Vector& v, const std::int64_t (&p)[3], int dim) {
 }
 
 } // namespace
-
-std::int64_t uniform(std::mt19937_64& rng, std::int64_t lo, std::int64_t hi) {
-    if (hi < lo) throw std::invalid_argument("uniform: empty range");
-    const std::uint64_t range = static_cast<std::uint64_t>(hi - lo) + 1; // 0: all 2^64 values
-    if (range == 0) return static_cast<std::int64_t>(rng());
-    const std::uint64_t max = std::numeric_limits<std::uint64_t>::max();
-    const std::uint64_t limit = max - (max % range + 1) % range; // a multiple of range, minus 1
-    std::uint64_t x;
-    do x = rng();
-    while (x > limit);
-    return lo + static_cast<std::int64_t>(x % range);
-}
-
-std::int64_t integer_root(std::int64_t n, int dim) {
-    std::int64_t r = 1;
-    auto power = [&](std::int64_t x) {
-        std::int64_t p = 1;
-        for (int i = 0; i < dim; ++i) p *= x;
-        return p;
-    };
-    while (power(r + 1) <= n) ++r;
-    return r;
-}
 
 Scene random_box(int dim, std::int64_t n, std::uint64_t seed) {
     if (dim != 2 && dim != 3) throw std::invalid_argument("random_box: dim is 2 or 3");
@@ -111,24 +78,20 @@ Scene random_box(int dim, std::int64_t n, std::uint64_t seed) {
     return scene;
 }
 
+// The library's `box` family with the far corner as target.
 Scene box_corner(std::int64_t m, std::int64_t n) {
-    Scene scene;
-    scene.dim = 2;
-    add_rectangle_box(scene, {m, n, 0});
-    set_point(scene.start, {0, 0, 0}, 2);
-    set_point(scene.direction, {1, 1, 0}, 2);
-    set_point(scene.target, {m, n, 0}, 2);
-    return scene;
+    BoxFamily f;
+    f.sides = {Integer(static_cast<long>(m)), Integer(static_cast<long>(n))};
+    f.target = BoxFamily::Target::far;
+    return generate_box(f).scene;
 }
 
 Scene box_corner_3d(std::int64_t m, std::int64_t n, std::int64_t k) {
-    Scene scene;
-    scene.dim = 3;
-    add_rectangle_box(scene, {m, n, k});
-    set_point(scene.start, {0, 0, 0}, 3);
-    set_point(scene.direction, {1, 1, 1}, 3);
-    set_point(scene.target, {m, n, k}, 3);
-    return scene;
+    BoxFamily f;
+    f.sides = {Integer(static_cast<long>(m)), Integer(static_cast<long>(n)),
+               Integer(static_cast<long>(k))};
+    f.target = BoxFamily::Target::far;
+    return generate_box(f).scene;
 }
 
 Scene unit_square(std::int64_t p, std::int64_t q) {

@@ -7,6 +7,7 @@
 // compiler and machine.
 #pragma once
 
+#include "orthoray/generate.hpp"
 #include "orthoray/scene.hpp"
 
 #include <cstdint>
@@ -17,12 +18,9 @@ namespace orthoray::bench {
 // The side of the random boxes: coordinates are integers in [0, box_side].
 inline constexpr std::int64_t box_side = 1'000'000;
 
-// A uniform integer in [lo, hi] (lo <= hi), by rejection sampling: the same
-// numbers everywhere.
-std::int64_t uniform(std::mt19937_64& rng, std::int64_t lo, std::int64_t hi);
-
-// floor(n^(1/dim)) for dim in {1, 2, 3}, in integers.
-std::int64_t integer_root(std::int64_t n, int dim);
+// The library's deterministic integer sampling (orthoray/generate.hpp).
+using orthoray::integer_root;
+using orthoray::uniform;
 
 // The closed mirror box [0, box_side]^dim (2*dim faces) plus n random
 // mirrors with integer coordinates inside it. A mirror has a random normal

@@ -12,7 +12,9 @@ int main(int argc, char** argv) {
                  "reaches a target point, and proves the answer with a certificate.\n\n"
                  "Example:\n"
                  "  orthoray solve instances/2d/box-corner-3x5.scene --certificate path.cert\n"
-                 "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n\n"
+                 "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
+                 "  orthoray generate box --sides 3 5 -o box.scene\n"
+                 "  orthoray bounds box.scene\n\n"
                  "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
                  "3 a resource limit was reached before an answer.\n"
                  "Scene format and rules: docs/scene-format.md, docs/semantics.md."};
@@ -22,6 +24,8 @@ int main(int argc, char** argv) {
     Command solve = add_solve(app);
     Command verify = add_verify(app);
     Command pieces = add_pieces(app);
+    Command generate = add_generate(app);
+    Command bounds = add_bounds(app);
     // CLI11 would call an unknown command a missing one; name it instead.
     auto is_command = [&](const char* word) {
         for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
@@ -29,8 +33,9 @@ int main(int argc, char** argv) {
         return false;
     };
     if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
-        std::cerr << "orthoray: found the command '" << argv[1]
-                  << "', expected solve, verify or pieces (see 'orthoray --help')\n";
+        std::cerr
+            << "orthoray: found the command '" << argv[1]
+            << "', expected solve, verify, pieces, generate or bounds (see 'orthoray --help')\n";
         return bad_input;
     }
     try {
@@ -42,7 +47,10 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("solve")) return solve();
-        return app.got_subcommand("verify") ? verify() : pieces();
+        if (app.got_subcommand("verify")) return verify();
+        if (app.got_subcommand("generate")) return generate();
+        if (app.got_subcommand("bounds")) return bounds();
+        return pieces();
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';
         return bad_input;

@@ -1,0 +1,221 @@
+// orthoray generate FAMILY: write a scene of one of the instance families.
+#include "commands.hpp"
+#include "orthoray/generate.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace orthoray::cli {
+namespace {
+
+struct GenerateArgs {
+    std::string family, output;
+    std::uint64_t seed = 1;
+    // random
+    int dim = 2;
+    std::int64_t mirrors = 20, range = 1000, denominator = 1, direction_size = 10;
+    unsigned bits = 0;
+    std::string absorbers = "0";
+    bool box = false;
+    std::int64_t target_after = 0;
+    // box, square
+    std::vector<std::string> sides = {"3", "5"}, start, direction, target_point;
+    std::string target = "reached";
+    // hallway
+    std::string length = "1000", slope = "1/10";
+    // coprime-box, coprime-cuboid
+    unsigned k = 4;
+};
+
+// Which options each family reads; any other family option is a usage error.
+const std::map<std::string, std::set<std::string>> family_options{
+    {"random",
+     {"--dim", "--mirrors", "--absorbers", "--range", "--bits", "--denominator", "--box",
+      "--target-after", "--direction-size"}},
+    {"box", {"--sides", "--start", "--direction", "--target", "--target-point"}},
+    {"square", {"--direction"}},
+    {"hallway", {"--length", "--slope"}},
+    {"coprime-box", {"--k", "--target"}},
+    {"coprime-cuboid", {"--k", "--target"}},
+};
+
+const std::map<std::string, BoxFamily::Target> targets{{"reached", BoxFamily::Target::reached},
+                                                       {"far", BoxFamily::Target::far},
+                                                       {"generic", BoxFamily::Target::generic}};
+
+Rational number(const std::string& text, const std::string& option) {
+    const NumberToken token = read_number(text);
+    if (token.status != NumberToken::Status::ok)
+        throw UsageError("found '" + text + "' for " + option + ", expected a number");
+    return token.value;
+}
+
+Integer whole(const std::string& text, const std::string& option) {
+    const Rational x = number(text, option);
+    if (x.get_den() != 1)
+        throw UsageError("found '" + text + "' for " + option + ", expected an integer");
+    return x.get_num();
+}
+
+Vector point(const std::vector<std::string>& words, std::size_t dim, const std::string& option) {
+    if (words.size() != dim)
+        throw UsageError("found " + std::to_string(words.size()) + " numbers for " + option +
+                         ", expected " + std::to_string(dim));
+    Vector v;
+    for (std::size_t j = 0; j < dim; ++j) v[j] = number(words[j], option);
+    return v;
+}
+
+GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
+    auto given = [&](const std::string& option) { return cmd.get_option(option)->count() > 0; };
+    if (a.family == "random") {
+        RandomFamily f;
+        f.dim = a.dim;
+        f.mirrors = a.mirrors;
+        f.absorbers = number(a.absorbers, "--absorbers");
+        f.range = given("--bits") ? std::int64_t{1} << a.bits : a.range;
+        f.denominator = a.denominator;
+        f.box = a.box;
+        if (given("--target-after")) f.target_after = a.target_after;
+        f.direction_size = a.direction_size;
+        f.seed = a.seed;
+        return generate_random(f);
+    }
+    if (a.family == "box") {
+        BoxFamily f;
+        f.sides.clear();
+        for (const std::string& s : a.sides) f.sides.push_back(whole(s, "--sides"));
+        const std::size_t dim = f.sides.size();
+        if (dim != 2 && dim != 3)
+            throw UsageError("found " + std::to_string(dim) +
+                             " numbers for --sides, expected 2 or 3");
+        if (given("--start")) f.start = point(a.start, dim, "--start");
+        if (given("--direction")) f.direction = point(a.direction, dim, "--direction");
+        f.target = targets.at(a.target);
+        if (given("--target-point")) {
+            if (given("--target"))
+                throw UsageError("--target and --target-point exclude each other");
+            f.target = BoxFamily::Target::point;
+            f.target_point = point(a.target_point, dim, "--target-point");
+        }
+        return generate_box(f);
+    }
+    if (a.family == "square") {
+        const std::vector<std::string> pq =
+            given("--direction") ? a.direction : std::vector<std::string>{"3", "2"};
+        if (pq.size() != 2)
+            throw UsageError("found " + std::to_string(pq.size()) +
+                             " numbers for --direction, expected 2 (p q)");
+        return generate_square(whole(pq[0], "--direction"), whole(pq[1], "--direction"));
+    }
+    if (a.family == "hallway")
+        return generate_hallway(number(a.length, "--length"), number(a.slope, "--slope"));
+    if (a.family == "coprime-box") return generate_coprime_box(a.k, targets.at(a.target));
+    return generate_coprime_cuboid(a.k, targets.at(a.target));
+}
+
+int run(const GenerateArgs& args, const CLI::App& cmd) {
+    const std::set<std::string>& allowed = family_options.at(args.family);
+    std::string header = "orthoray generate " + args.family;
+    for (const CLI::Option* option : cmd.get_options()) {
+        const std::string name = option->get_name();
+        if (option->count() == 0 || name == "FAMILY" || name == "--output" || name == "--help")
+            continue;
+        if (name != "--seed" && !allowed.contains(name))
+            throw UsageError("the option " + name + " does not apply to the family " + args.family +
+                             " (see 'orthoray generate --help')");
+        header += ' ' + name;
+        for (const std::string& word : option->results()) header += ' ' + word;
+    }
+    GeneratedScene generated;
+    try {
+        generated = build(args, cmd);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(args.family + ": " + e.what());
+    }
+    const std::string text = write_generated(generated, {header});
+    if (args.output.empty()) {
+        std::cout << text;
+        return yes;
+    }
+    std::ofstream out(args.output, std::ios::binary | std::ios::trunc);
+    if (!out || !(out << text)) throw UsageError("cannot write the file '" + args.output + "'");
+    return yes;
+}
+
+} // namespace
+
+Command add_generate(CLI::App& app) {
+    auto args = std::make_shared<GenerateArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "generate",
+        "Write a scene of an instance family (docs/generate.md). The same arguments give the\n"
+        "same bytes on every machine. Where the answer is known in closed form or by\n"
+        "construction it is written as a comment '# expect: yes hit N' (or 'no cycle N', ...).\n\n"
+        "Families and an example each:\n"
+        "  random          random mirrors (and absorbers), optionally boxed\n"
+        "                    orthoray generate random --dim 2 --mirrors 50 --box --target-after 20 "
+        "--seed 7\n"
+        "  box             the closed mirror box a x b (x c), from the corner 0 at 45 degrees\n"
+        "                  (or --start/--direction); target reached, far, generic or a point\n"
+        "                    orthoray generate box --sides 3 5 --target far\n"
+        "  square          the unit mirror square, direction (p, q), generic start: period "
+        "2(p+q)\n"
+        "                    orthoray generate square --direction 5 3\n"
+        "  hallway         mirrors y = 0 and y = 1 on [0, L], a ray of small slope\n"
+        "                    orthoray generate hallway --length 10000 --slope 1/100\n"
+        "  coprime-box     the (2^k + 1) x 2^k box: 2^(k+1) - 1 reflections to a corner\n"
+        "                    orthoray generate coprime-box --k 20\n"
+        "  coprime-cuboid  the (2^k + 1) x 2^k x (2^k - 1) box: about 3 * 4^k reflections\n"
+        "                    orthoray generate coprime-cuboid --k 6 --target far\n\n"
+        "Exit status: 0 written, 2 bad usage (an option the family does not take, a bad number).");
+    cmd->add_option("FAMILY", args->family,
+                    "random, box, square, hallway, coprime-box, coprime-cuboid")
+        ->required()
+        ->check(
+            CLI::IsMember({"random", "box", "square", "hallway", "coprime-box", "coprime-cuboid"}));
+    cmd->add_option("-o,--output", args->output, "write the scene to this file (default: stdout)");
+    cmd->add_option("--seed", args->seed,
+                    "the seed of std::mt19937_64 for random (default 1); the other families are "
+                    "fixed by their parameters and only record it");
+    cmd->add_option("--dim", args->dim, "random: dimension 2 or 3 (default 2)");
+    cmd->add_option("--mirrors", args->mirrors, "random: number of elements (default 20)");
+    cmd->add_option("--absorbers", args->absorbers,
+                    "random: the chance an element absorbs, a fraction like 1/10 (default 0)");
+    CLI::Option* range =
+        cmd->add_option("--range", args->range, "random: coordinates in [0, R] (default 1000)");
+    cmd->add_option("--bits", args->bits, "random: coordinates in [0, 2^B] (instead of --range)")
+        ->excludes(range)
+        ->check(CLI::Range(1, 40));
+    cmd->add_option("--denominator", args->denominator,
+                    "random: each number is k/q with q in 1..Q (default 1: integers)");
+    cmd->add_flag("--box", args->box, "random: also the closed mirror box [0, R]^dim");
+    cmd->add_option("--target-after", args->target_after,
+                    "random: the target is the midpoint of the segment after K reflections (the "
+                    "answer is then known: yes); without it, a random point");
+    cmd->add_option("--direction-size", args->direction_size,
+                    "random: direction components are nonzero integers in [-D, D] (default 10)");
+    cmd->add_option("--sides", args->sides, "box: 2 or 3 positive integer sides (default 3 5)")
+        ->expected(2, 3);
+    cmd->add_option("--start", args->start, "box: the start point (default the corner 0)")
+        ->expected(2, 3);
+    cmd->add_option("--direction", args->direction,
+                    "box: the direction (default all ones); square: p q (default 3 2)")
+        ->expected(2, 3);
+    cmd->add_option("--target", args->target,
+                    "box, coprime-box, coprime-cuboid: reached (default: the corner the 45-degree "
+                    "ray reaches), far (the corner opposite 0) or generic (a point never reached)")
+        ->check(CLI::IsMember({"reached", "far", "generic"}));
+    cmd->add_option("--target-point", args->target_point, "box: the target point")->expected(2, 3);
+    cmd->add_option("--length", args->length, "hallway: the mirrors' length L (default 1000)");
+    cmd->add_option("--slope", args->slope, "hallway: the ray's slope, > 0 (default 1/10)");
+    cmd->add_option("--k", args->k,
+                    "coprime-box, coprime-cuboid: the sides' bit size k (default 4)");
+    return [args, cmd] { return run(*args, *cmd); };
+}
+
+} // namespace orthoray::cli
