@@ -217,7 +217,7 @@ void copy(char (&out)[16], const std::string& s) {
 ChildResult run_exact(const Scene& scene, std::uint64_t steps, Engine engine) {
     SolveOptions options;
     options.engine = engine;
-    options.shooter = Shooter::pieces; // 2D tables from the start; the grid in 3D
+    options.shooter = Shooter::pieces; // 2D tables from the start; the cross-section grid in 3D
     options.max_steps = steps;
     const auto begin = std::chrono::steady_clock::now();
     const Answer a = solve(scene, options);

@@ -44,20 +44,29 @@ public:
     // Where the ray is: the pieces of one (mirror, direction), and the axis
     // positions on that mirror run along.
     struct Cursor {
-        std::uint32_t begin = 0, count = 0;
+        std::uint32_t begin = 0;
+        std::uint16_t count = 0; // a slot with more pieces makes the build give up
         std::uint8_t tangent = 0;
     };
 
+    // 24 bytes with 64-bit integers: every reflection loads one, and at 10^5
+    // mirrors the tables are far larger than the cache, so size is speed.
     struct Piece {
-        Int from;          // first position on the mirror this piece covers
-        Int t0;            // the next hit's parameter at u = from
-        std::int8_t slope; // t(u) = t0 + slope * (u - from)
-        std::uint8_t flip; // normal axes of the mirrors met there
-        Kind kind;
-        bool near_target; // some state of this piece starts a segment through the target
+        Int from; // first position on the mirror this piece covers
+        Int t0;   // the next hit's parameter at u = from
         // After reflecting here: the next mirror's pieces for the new
         // direction, stored inline so that a step needs no other lookup.
-        Cursor next;
+        std::uint32_t next_begin = 0;
+        std::uint16_t next_count = 0;
+        std::uint8_t next_tangent : 1 = 0;
+        std::uint8_t near_target : 1 = 0; // a state here starts a segment through the target
+        std::uint8_t flip : 2 = 0;        // normal axes of the mirrors met there
+        std::uint8_t kind_code : 2 = 0;   // a Kind
+        std::uint8_t slope_code : 2 = 1;  // slope + 1: t(u) = t0 + slope * (u - from)
+
+        Kind kind() const { return static_cast<Kind>(kind_code); }
+        int slope() const { return static_cast<int>(slope_code) - 1; }
+        Cursor next() const { return {next_begin, next_count, next_tangent}; }
     };
 
     // std::nullopt when the tables would need more than max_pieces pieces
@@ -84,12 +93,12 @@ public:
         const Int& u = p[where.tangent];
         const Piece& piece = *locate(where, u);
         Shot<Int> shot;
-        shot.escape = piece.kind == Kind::escape;
-        shot.absorber = piece.kind == Kind::absorb;
+        shot.escape = piece.kind() == Kind::escape;
+        shot.absorber = piece.kind() == Kind::absorb;
         shot.flip = piece.flip;
         shot.near_target = piece.near_target;
-        shot.t = piece.t0 + Int(piece.slope) * Int(u - piece.from);
-        where = piece.next;
+        shot.t = piece.t0 + Int(piece.slope()) * Int(u - piece.from);
+        where = piece.next();
         return shot;
     }
 
@@ -295,28 +304,27 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                     grid.for_each_element_at(
                         p, [&](std::uint32_t f) { s.record(t, box[f].axis, box[f].absorber, f); });
                 }
-                Piece piece{u,
-                            s.t,
-                            0,
-                            static_cast<std::uint8_t>(s.flip),
-                            s.escape     ? Kind::escape
-                            : s.absorber ? Kind::absorb
-                                         : Kind::reflect,
-                            false,
-                            Cursor{}};
+                Piece piece;
+                piece.from = u;
+                piece.t0 = s.t;
+                piece.flip = s.flip & 3u;
+                piece.kind_code = static_cast<std::uint8_t>(s.escape     ? Kind::escape
+                                                            : s.absorber ? Kind::absorb
+                                                                         : Kind::reflect);
                 // Moving u along A moves the hit along B; t changes only when
                 // B is perpendicular to A (B's normal is A's tangent axis).
                 if (!s.escape && s.met == (1u << tangent)) {
                     const bool neg = (d >> tangent) & 1u;
-                    piece.slope = neg ? 1 : -1;
+                    piece.slope_code = neg ? 2 : 0;
                 }
                 if (table.pieces_.size() > first) {
                     const Piece& last = table.pieces_.back();
                     const bool same_map =
-                        last.kind == piece.kind && last.flip == piece.flip &&
-                        table.next_mirror_.back() == s.mirror && last.slope == piece.slope &&
-                        (piece.kind == Kind::escape ||
-                         last.t0 + Int(last.slope) * Int(u - last.from) == piece.t0);
+                        last.kind_code == piece.kind_code && last.flip == piece.flip &&
+                        table.next_mirror_.back() == s.mirror &&
+                        last.slope_code == piece.slope_code &&
+                        (piece.kind() == Kind::escape ||
+                         last.t0 + Int(last.slope()) * Int(u - last.from) == piece.t0);
                     if (same_map) return;
                 }
                 table.pieces_.push_back(piece);
@@ -327,8 +335,9 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                 if (i + 1 < b.size() && Int(b[i]->u + 1) < b[i + 1]->u)
                     resolve(Int(b[i]->u + 1), no_event);
             }
-            range.count = static_cast<std::uint32_t>(table.pieces_.size()) - range.begin;
-            if (table.pieces_.size() > max_pieces) return std::nullopt;
+            const std::size_t count = table.pieces_.size() - range.begin;
+            if (table.pieces_.size() > max_pieces || count > UINT16_MAX) return std::nullopt;
+            range.count = static_cast<std::uint16_t>(count);
         }
     }
 
@@ -339,8 +348,12 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                                end = k + table.slots_[m * 4 + d].count;
                  k < end; ++k) {
                 Piece& piece = table.pieces_[k];
-                if (piece.kind == Kind::reflect)
-                    piece.next = table.at(table.next_mirror_[k], d ^ piece.flip);
+                if (piece.kind() == Kind::reflect) {
+                    const Cursor next = table.at(table.next_mirror_[k], d ^ piece.flip);
+                    piece.next_begin = next.begin;
+                    piece.next_count = next.count;
+                    piece.next_tangent = next.tangent & 1u;
+                }
             }
     return table;
 }
@@ -368,19 +381,21 @@ void PieceTable<Int>::dump(std::ostream& out) const {
             for (const Piece& p : pieces(m, d)) {
                 out << "element " << m << ' ' << direction[d] << " from " << to_integer(p.from)
                     << ": ";
-                if (p.kind == Kind::escape) {
+                if (p.kind() == Kind::escape) {
                     out << "escape\n";
                     continue;
                 }
-                out << (p.kind == Kind::absorb
+                out << (p.kind() == Kind::absorb
                             ? "absorbed"
                             : "element " + std::to_string(next_mirror_[&p - pieces_.data()]))
                     << " at t = " << to_integer(p.t0);
-                if (p.slope != 0) out << (p.slope > 0 ? " + (u - from)" : " - (u - from)");
-                if (p.kind == Kind::reflect)
+                if (p.slope() != 0) out << (p.slope() > 0 ? " + (u - from)" : " - (u - from)");
+                if (p.kind() == Kind::reflect)
                     out << ", flip " << ((p.flip & 1u) ? "x" : "") << ((p.flip & 2u) ? "y" : "");
                 out << '\n';
             }
 }
+
+static_assert(sizeof(PieceTable<std::int64_t>::Piece) == 24, "a piece is meant to be 24 bytes");
 
 } // namespace orthoray::lattice
