@@ -279,7 +279,7 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
     const Int behind = depth - bundle.reach;
     // Cells hold a handful of members: counting them without branches beats
     // a binary search, whose jumps the processor cannot predict.
-    if (last - first <= 16) {
+    if (last - first <= 64) {
         std::ptrdiff_t skip = 0;
         for (const Member* m = first; m != last; ++m) skip += !(behind < m->key);
         first += skip;
