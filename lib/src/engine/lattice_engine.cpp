@@ -2,10 +2,12 @@
 // asks a shooter for the next hit, checks the target on the segment, and
 // reflects by flipping the mask bits of the mirrors' normal axes.
 //
-// Shooters: the uniform grid answers any query with no setup beyond its
-// cells; in 2D the piece tables answer one with a binary search but cost a
-// preprocessing pass, so by default a run starts on the grid and switches to
-// the tables only if it has not ended after grid_phase(n) reflections.
+// Shooters (docs/shooting.md): in 3D the cross-section grid looks the ray's
+// line up in one cell. In 2D the uniform grid answers any query with no
+// setup beyond its cells, and the piece tables answer one with a search
+// among a mirror's few pieces but cost a preprocessing pass, so by default a
+// run starts on the grid and switches to the tables only if it has not ended
+// after grid_phase(n) reflections. Crowded scenes get the BVH.
 #include "engine/lattice_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
@@ -142,18 +144,23 @@ double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
-// Steps to the answer with a shooter built by `make` (its setup time counted),
-// reporting its name.
-template <class Int, int M, class Detector, class Make>
-Answer finish_with(Run<Int, M, Detector>& run, const char* name, Make&& make) {
-    const auto begin = std::chrono::steady_clock::now();
-    const auto shooter = make();
-    run.answer().setup.seconds += seconds_since(begin);
+// Steps to the answer with `shooter`, reporting its name.
+template <class Int, int M, class Detector, class NextHit>
+Answer finish_with(Run<Int, M, Detector>& run, const char* name, const NextHit& shooter) {
     run.answer().shooter = name;
     run.advance(
         [&](const State<Int, M>& s, std::uint32_t) { return shooter.shoot(s.p, s.negative); },
         ~std::uint64_t{0});
     return run.answer();
+}
+
+// The same with a shooter built by `make`, its setup time counted.
+template <class Int, int M, class Detector, class Make>
+Answer build_and_finish(Run<Int, M, Detector>& run, const char* name, Make&& make) {
+    const auto begin = std::chrono::steady_clock::now();
+    const auto shooter = make();
+    run.answer().setup.seconds += seconds_since(begin);
+    return finish_with(run, name, shooter);
 }
 
 // A shooter suits elements spread over their box; when many crowd into a few
@@ -174,14 +181,14 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     Answer::Setup& setup = run.answer().setup;
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
-    auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
-        return grid.shoot(s.p, s.negative);
-    };
     run.answer().shooter = "grid";
     const bool tables = options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
     if (tables) {
         const std::uint64_t first =
             options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
+        auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
+            return grid.shoot(s.p, s.negative);
+        };
         if (run.advance(by_grid, first)) return run.answer();
         // Piece tables may grow quadratic with crossings: past 64 pieces a
         // mirror on average, stay on the grid.
@@ -211,12 +218,12 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     if (options.shooter == Shooter::bvh ||
         (options.shooter == Shooter::automatic &&
          clustered(grid.fullest_cell(), grid.size(), grid.cell_count())))
-        return finish_with(run, "bvh",
-                           [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, "bvh",
+                                [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
     if (options.shooter == Shooter::section)
-        return finish_with(run, "section", [&] { return lattice::CrossSectionGrid<Int, M>(ls); });
-    run.advance(by_grid, ~std::uint64_t{0});
-    return run.answer();
+        return build_and_finish(run, "section",
+                                [&] { return lattice::CrossSectionGrid<Int, M>(ls); });
+    return finish_with(run, "grid", grid);
 }
 
 // 1D and 3D: the cross-section grid, which looks the ray's line up instead
@@ -226,13 +233,13 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
                    const SolveOptions& options) {
     switch (options.shooter) {
     case Shooter::grid:
-        return finish_with(run, "grid", [&] {
+        return build_and_finish(run, "grid", [&] {
             return lattice::UniformGrid<Int, M>(ls,
                                                 options.grid_density ? options.grid_density : 32);
         });
     case Shooter::bvh:
-        return finish_with(run, "bvh",
-                           [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, "bvh",
+                                [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
     default:
         break;
     }
@@ -243,13 +250,9 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
     setup.cells = section.cell_count();
     if (options.shooter == Shooter::automatic &&
         clustered(section.fullest_cell(), section.member_count(), section.cell_count()))
-        return finish_with(run, "bvh",
-                           [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
-    run.answer().shooter = "section";
-    run.advance(
-        [&](const State<Int, M>& s, std::uint32_t) { return section.shoot(s.p, s.negative); },
-        ~std::uint64_t{0});
-    return run.answer();
+        return build_and_finish(run, "bvh",
+                                [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+    return finish_with(run, "section", section);
 }
 
 template <class Int, int M, class Detector>
