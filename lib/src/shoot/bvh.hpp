@@ -24,6 +24,7 @@
 
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "shoot/element_box.hpp"
 #include "shoot/uniform_grid.hpp" // Shot
 
 #include <algorithm>
@@ -53,12 +54,7 @@ public:
     static constexpr std::uint32_t leaf_size = 2;
 
 private:
-    struct Item {
-        Int lo[M], hi[M];    // closed box; lo == hi on the normal axis
-        std::uint32_t index; // in scene.elements
-        std::uint8_t axis;
-        bool absorber;
-    };
+    using Item = ElementBox<Int, M>;
     struct Node {
         Int lo[M], hi[M];    // closed bounding box of the node's elements
         std::uint32_t first; // leaf: first item; interior: index of the right child
@@ -108,17 +104,8 @@ BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& sce
     items.reserve(n);
     std::vector<Int> centre(n * M); // lo + hi per element and axis: twice the centre
     for (std::size_t k = 0; k < n; ++k) {
-        const LatticeElement& e = scene.elements[k];
-        Item it;
-        for (int j = 0; j < M; ++j) {
-            it.lo[j] = from_integer<Int>(e.lo[j]);
-            it.hi[j] = from_integer<Int>(e.hi[j]);
-            centre[k * M + j] = Int(it.lo[j] + it.hi[j]);
-        }
-        it.index = static_cast<std::uint32_t>(k);
-        it.axis = static_cast<std::uint8_t>(e.axis);
-        it.absorber = e.absorber;
-        items.push_back(std::move(it));
+        const Item& it = items.emplace_back(scene.elements[k], static_cast<std::uint32_t>(k));
+        for (int j = 0; j < M; ++j) centre[k * M + j] = Int(it.lo[j] + it.hi[j]);
     }
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);

@@ -75,12 +75,7 @@ public:
 private:
     static constexpr int S = M - 1; // cross-section dimension
 
-    struct Item {
-        Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
-        std::uint8_t axis;
-        bool absorber;
-        std::uint32_t index; // in the scene
-    };
+    using Item = ElementBox<Int, M>;
     // A registration of an element in a cell. The plane's axis and offset are
     // copied in, so that members met behind p or beyond the best hit so far
     // are rejected without loading the element.
@@ -114,17 +109,9 @@ private:
 template <class Int, int M>
 CrossSectionGrid<Int, M>::CrossSectionGrid(const LatticeScene& scene,
                                            std::int64_t cells_per_element) {
-    for (const LatticeElement& e : scene.elements) {
-        Item it;
-        for (int j = 0; j < M; ++j) {
-            it.lo[j] = from_integer<Int>(e.lo[j]);
-            it.hi[j] = from_integer<Int>(e.hi[j]);
-        }
-        it.axis = static_cast<std::uint8_t>(e.axis);
-        it.absorber = e.absorber;
-        it.index = static_cast<std::uint32_t>(items_.size());
-        items_.push_back(std::move(it));
-    }
+    items_.reserve(scene.elements.size());
+    for (const LatticeElement& e : scene.elements)
+        items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
     // Elements in Z-order of their low corners: a cell's members, and the
     // ray's successive hits, are spatial neighbours, so they then share cache
     // lines instead of being scattered over the scene's declaration order.
@@ -293,12 +280,7 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
         const Int t = s[a] * Int(first->offset - p[a]);
         if (t <= 0 || (!shot.escape && shot.t < t)) continue;
         const Item& it = items_[first->item];
-        bool inside = true;
-        for (int j = 0; j < M; ++j) {
-            const Int x = p[j] + s[j] * t;
-            inside &= static_cast<int>(!(x < it.lo[j])) & static_cast<int>(!(it.hi[j] < x));
-        }
-        if (inside) shot.record(t, a, it.absorber, it.index);
+        if (it.holds(p, s, t)) shot.record(t, a, it.absorber, it.index);
     }
     return shot;
 }

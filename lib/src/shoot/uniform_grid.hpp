@@ -14,6 +14,7 @@
 
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "shoot/element_box.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -107,11 +108,7 @@ public:
     }
 
 private:
-    struct Item {
-        Int lo[M], hi[M]; // closed box; lo == hi on the normal axis
-        std::uint8_t axis;
-        bool absorber;
-    };
+    using Item = ElementBox<Int, M>;
     std::vector<Item> items_;
     Int lo_[M], hi_[M], h_[M];           // bounding box, cell size
     std::int64_t n_[M]{};                // cells per axis
@@ -151,16 +148,9 @@ private:
 
 template <class Int, int M>
 UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element) {
-    for (const LatticeElement& e : scene.elements) {
-        Item it;
-        for (int j = 0; j < M; ++j) {
-            it.lo[j] = from_integer<Int>(e.lo[j]);
-            it.hi[j] = from_integer<Int>(e.hi[j]);
-        }
-        it.axis = static_cast<std::uint8_t>(e.axis);
-        it.absorber = e.absorber;
-        items_.push_back(std::move(it));
-    }
+    items_.reserve(scene.elements.size());
+    for (const LatticeElement& e : scene.elements)
+        items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
     if (items_.empty()) {
         offsets_.assign(1, 0);
         return;
@@ -271,14 +261,7 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
             const int a = it.axis;
             const Int t = sigma[a] * Int(it.lo[a] - p[a]);
             if (t <= 0 || t_exit < t || (!shot.escape && shot.t < t)) continue;
-            // On the normal axis the point is exactly the offset, so testing
-            // every axis needs no exception for it.
-            bool inside = true;
-            for (int j = 0; j < M; ++j) {
-                const Int x = p[j] + sigma[j] * t;
-                inside &= static_cast<int>(!(x < it.lo[j])) & static_cast<int>(!(it.hi[j] < x));
-            }
-            if (inside) shot.record(t, a, it.absorber, members_[k]);
+            if (it.holds(p, sigma, t)) shot.record(t, a, it.absorber, it.index);
         }
         if (!shot.escape) return shot;
         for (int j = 0; j < M; ++j) {
