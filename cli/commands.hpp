@@ -23,5 +23,6 @@ struct UsageError : std::runtime_error {
 Command add_solve(CLI::App& app);
 Command add_verify(CLI::App& app);
 Command add_pieces(CLI::App& app);
+Command add_convert(CLI::App& app);
 
 } // namespace orthoray::cli

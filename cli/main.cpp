@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     Command solve = add_solve(app);
     Command verify = add_verify(app);
     Command pieces = add_pieces(app);
+    Command convert = add_convert(app);
     // CLI11 would call an unknown command a missing one; name it instead.
     auto is_command = [&](const char* word) {
         for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
     };
     if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
         std::cerr << "orthoray: found the command '" << argv[1]
-                  << "', expected solve, verify or pieces (see 'orthoray --help')\n";
+                  << "', expected solve, verify, pieces or convert (see 'orthoray --help')\n";
         return bad_input;
     }
     try {
@@ -42,7 +43,9 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("solve")) return solve();
-        return app.got_subcommand("verify") ? verify() : pieces();
+        if (app.got_subcommand("verify")) return verify();
+        if (app.got_subcommand("convert")) return convert();
+        return pieces();
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';
         return bad_input;

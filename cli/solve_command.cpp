@@ -3,6 +3,7 @@
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "scene_format_option.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +19,7 @@ namespace orthoray::cli {
 namespace {
 
 struct SolveArgs {
-    std::string file, certificate;
+    std::string file, certificate, format;
     bool json = false;
     std::uint64_t max_steps = 0;
     std::string engine = "lattice", detector = "first-state", arithmetic = "auto", shooter = "auto";
@@ -73,7 +74,8 @@ void print_text(const Answer& a, double seconds) {
 }
 
 int run(const SolveArgs& args, const CLI::Option* max_steps) {
-    const Scene scene = load_scene(args.file); // bad input ends here, before any output
+    const Scene scene = load_scene(
+        args.file, scene_format_named(args.format)); // bad input ends here, before any output
     SolveOptions options;
     options.engine = engines.at(args.engine);
     options.cycle_detector = detectors.at(args.detector);
@@ -117,8 +119,10 @@ Command add_solve(CLI::App& app) {
                  "reflections; answer no: it escapes to infinity, is absorbed, or is periodic\n"
                  "(reason cycle; `period` reflections per period) without passing the target.\n"
                  "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 --max-steps reached.");
-    cmd->add_option("FILE", args->file, "the .scene file (format: docs/scene-format.md)")
+    cmd->add_option("FILE", args->file,
+                    "the scene: .scene text (docs/scene-format.md) or JSON (docs/scene-json.md)")
         ->required();
+    add_scene_format_option(cmd, args->format);
     cmd->add_flag("--json", args->json,
                   "print one JSON object: answer, reason, reflections, period (cycles), "
                   "engine, arithmetic, seconds");
