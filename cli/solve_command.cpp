@@ -19,7 +19,7 @@ namespace orthoray::cli {
 namespace {
 
 struct SolveArgs {
-    std::string file, certificate, format;
+    std::string file, certificate, format, certificate_format = "text";
     bool json = false;
     std::uint64_t max_steps = 0;
     std::string engine = "lattice", detector = "first-state", arithmetic = "auto", shooter = "auto";
@@ -89,7 +89,10 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
         cert_file.open(args.certificate, std::ios::binary | std::ios::trunc);
         if (!cert_file)
             throw UsageError("cannot write the certificate file '" + args.certificate + "'");
-        writer = std::make_unique<CertificateWriter>(cert_file, scene);
+        writer = std::make_unique<CertificateWriter>(cert_file, scene,
+                                                     args.certificate_format == "jsonl"
+                                                         ? CertificateFormat::jsonl
+                                                         : CertificateFormat::text);
         options.path = writer.get();
     }
     auto begin = std::chrono::steady_clock::now();
@@ -129,6 +132,10 @@ Command add_solve(CLI::App& app) {
     cmd->add_option("--certificate", args->certificate,
                     "stream the certificate (docs/certificates.md) to this file; check it with "
                     "'orthoray verify'");
+    cmd->add_option("--certificate-format", args->certificate_format,
+                    "text (default) or jsonl: JSON Lines, one JSON object a line, for other "
+                    "tools; 'verify' and 'render' read both (docs/certificates.md)")
+        ->check(CLI::IsMember({"text", "jsonl"}));
     CLI::Option* max_steps =
         cmd->add_option("--max-steps", args->max_steps,
                         "perform at most N reflections; without an answer by then, answer unknown "

@@ -12,17 +12,26 @@
 
 namespace orthoray {
 
+enum class CertificateFormat {
+    text,  // one statement a line
+    jsonl, // JSON Lines: one JSON object a line, for other tools
+};
+
 // Streams a certificate while a solver runs: attach it as SolveOptions::path,
 // then call finish() with the answer. Memory stays O(1) in the path length.
 class CertificateWriter : public PathSink {
 public:
-    CertificateWriter(std::ostream& out, const Scene& scene);
+    CertificateWriter(std::ostream& out, const Scene& scene,
+                      CertificateFormat format = CertificateFormat::text);
     void visit(const Vector& point, const Vector& direction) override;
     void finish(const Answer& answer);
 
 private:
+    void write_vector(const Vector& x);
+
     std::ostream& out_;
     const Scene& scene_;
+    CertificateFormat format_;
     std::uint64_t visits_ = 0;
     Vector first_reflection_point_, first_reflection_direction_;
     Vector last_direction_;
@@ -33,7 +42,8 @@ struct Verdict {
     std::string message; // "valid: ..." or the first failing step
 };
 
-// Checks a certificate against the scene with plain rational geometry that
+// Checks a certificate (either format, recognised from its first line)
+// against the scene with plain rational geometry that
 // shares no code with the solvers. A malformed certificate throws InputError.
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name = "<certificate>");
