@@ -24,5 +24,6 @@ Command add_solve(CLI::App& app);
 Command add_verify(CLI::App& app);
 Command add_pieces(CLI::App& app);
 Command add_convert(CLI::App& app);
+Command add_render(CLI::App& app);
 
 } // namespace orthoray::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     Command solve = add_solve(app);
     Command verify = add_verify(app);
     Command pieces = add_pieces(app);
+    Command render = add_render(app);
     Command convert = add_convert(app);
     // CLI11 would call an unknown command a missing one; name it instead.
     auto is_command = [&](const char* word) {
@@ -30,8 +31,9 @@ int main(int argc, char** argv) {
         return false;
     };
     if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
-        std::cerr << "orthoray: found the command '" << argv[1]
-                  << "', expected solve, verify, pieces or convert (see 'orthoray --help')\n";
+        std::cerr
+            << "orthoray: found the command '" << argv[1]
+            << "', expected solve, verify, pieces, render or convert (see 'orthoray --help')\n";
         return bad_input;
     }
     try {
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("solve")) return solve();
         if (app.got_subcommand("verify")) return verify();
+        if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("convert")) return convert();
         return pieces();
     } catch (const orthoray::InputError& e) {

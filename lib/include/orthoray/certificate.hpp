@@ -48,4 +48,19 @@ struct Verdict {
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name = "<certificate>");
 
+// What a certificate claims, read without being checked (verify checks it).
+struct CertificateClaim {
+    bool complete = false; // the verdict and the final 'end' are there
+    std::string answer;    // yes, no or unknown
+    Reason reason = Reason::limit;
+    Integer reflections;
+    Vector direction; // escape: the final ray's direction
+};
+
+// Streams a certificate's points (either format) to `sink`, with a zero
+// direction since the file lists points only, and returns its verdict. For
+// drawing paths; a malformed certificate throws InputError.
+CertificateClaim read_certificate_path(const Scene& scene, std::istream& certificate,
+                                       const std::string& certificate_name, PathSink& sink);
+
 } // namespace orthoray
