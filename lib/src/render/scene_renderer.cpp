@@ -100,6 +100,8 @@ struct SceneRenderer::Impl {
     std::vector<std::string> caption;
     std::size_t elements_drawn = 0, elements_total = 0;
 
+    mutable Rational difference; // reused: a path may have 10^7 points
+
     std::optional<Point3> start, last;
     std::uint64_t visits = 0;
     std::optional<PathEnd> end;
@@ -110,8 +112,9 @@ struct SceneRenderer::Impl {
         draw_elements();
     }
 
-    // The box around elements, start and target, padded by 4% of its
-    // longest side; a side of length zero gets the longest side's length.
+    // The box around elements, start and target; a side of length zero gets
+    // the longest side's length. Padded by 4% of the longest side, or of
+    // each side when the sides are scaled separately.
     void frame() {
         const int dim = scene.dim;
         auto include = [&](const Vector& p, bool first) {
@@ -129,22 +132,25 @@ struct SceneRenderer::Impl {
         Rational longest = 0;
         for (int j = 0; j < dim; ++j) longest = std::max<Rational>(longest, hi[j] - lo[j]);
         if (longest == 0) longest = 1;
+        std::array<double, 3> span{1, 1, 1};
+        double max_span = 0, min_span = HUGE_VAL;
         for (int j = 0; j < dim; ++j) {
             if (hi[j] == lo[j]) {
                 lo[j] -= longest / 2;
                 hi[j] += longest / 2;
             }
-            lo[j] -= longest / 25;
-            hi[j] += longest / 25;
-        }
-        std::array<double, 3> span{1, 1, 1};
-        double max_span = 0, min_span = HUGE_VAL;
-        for (int j = 0; j < dim; ++j) {
             span[j] = Rational(hi[j] - lo[j]).get_d();
             max_span = std::max(max_span, span[j]);
             min_span = std::min(min_span, span[j]);
         }
         separate_scales = !(max_span <= max_aspect * min_span) || !std::isfinite(max_span);
+        for (int j = 0; j < dim; ++j) {
+            const Rational pad = (separate_scales ? Rational(hi[j] - lo[j]) : longest) / 25;
+            lo[j] -= pad;
+            hi[j] += pad;
+            span[j] = Rational(hi[j] - lo[j]).get_d();
+        }
+        max_span = *std::max_element(span.begin(), span.begin() + dim);
         for (int j = 0; j < dim; ++j) {
             unit[j] = separate_scales ? 1 / span[j] : 1 / max_span;
             extent[j] = span[j] * unit[j];
@@ -154,7 +160,10 @@ struct SceneRenderer::Impl {
 
     Point3 normalised(const Vector& p) const {
         Point3 n{0, 0, 0};
-        for (int j = 0; j < scene.dim; ++j) n[j] = Rational(p[j] - lo[j]).get_d() * unit[j];
+        for (int j = 0; j < scene.dim; ++j) {
+            mpq_sub(difference.get_mpq_t(), p[j].get_mpq_t(), lo[j].get_mpq_t());
+            n[j] = difference.get_d() * unit[j];
+        }
         return n;
     }
 
@@ -370,16 +379,23 @@ struct SceneRenderer::Impl {
     void write_markers(std::ostream& out, const View& v) const {
         // Start: a dot and an arrow along the start direction as this view sees it.
         const Pixel s = v.map(normalised(scene.start));
-        Vector ahead = scene.start;
-        Rational longest = 0;
-        for (int j = 0; j < scene.dim; ++j)
-            longest = std::max<Rational>(longest, abs(scene.direction[j]));
-        for (int j = 0; j < scene.dim; ++j) ahead[j] += scene.direction[j] / longest / 1000;
-        const Pixel a = v.map(normalised(ahead));
+
+        // The direction in normalised units, scaled so its largest part is
+        // 1 (the scene's numbers may be far beyond what a double can divide).
+        const Point3 from = normalised(scene.start);
+        Point3 ahead = from, d{0, 0, 0};
+        double largest = 0;
+        for (int j = 0; j < scene.dim; ++j) {
+            d[j] = scene.direction[j].get_d() * unit[j];
+            largest = std::max(largest, std::abs(d[j]));
+        }
+        if (largest > 0 && std::isfinite(largest))
+            for (int j = 0; j < scene.dim; ++j) ahead[j] += 0.01 * d[j] / largest;
+        const Pixel a = v.map(ahead);
         const double dx = a.x - s.x, dy = a.y - s.y, length = std::hypot(dx, dy);
         out << "<circle class=\"start\" cx=\"" << number_text(s.x) << "\" cy=\"" << number_text(s.y)
             << "\" r=\"5\"/>\n";
-        if (length > 1e-12 && std::isfinite(length)) {
+        if (length > 1e-6 && std::isfinite(length)) {
             const double ux = dx / length, uy = dy / length, tip_x = s.x + 34 * ux,
                          tip_y = s.y + 34 * uy;
             out << "<path class=\"start-arrow\" d=\"M" << number_text(s.x) << " "
@@ -429,6 +445,11 @@ struct SceneRenderer::Impl {
     void write(std::ostream& out) const {
         const std::vector<std::string> lines = caption_lines();
         const double caption_height = caption_line * static_cast<double>(lines.size()) + 12;
+        // Thinner lines when there are many elements, so that a maze of
+        // 10^5 mirrors is not one blue square.
+        const double element_stroke = elements_total <= 200    ? 2
+                                      : elements_total <= 5000 ? 1.2
+                                                               : 0.6;
         out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
             << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number_text(page_width)
             << "\" height=\"" << number_text(page_height + caption_height) << "\" viewBox=\"0 "
@@ -441,8 +462,11 @@ struct SceneRenderer::Impl {
                ".frame{fill:none;stroke:#bbb;stroke-width:1}\n"
                "line.tick{stroke:#888}\n"
                ".axis-arrow{stroke:#666;stroke-width:1.5}\n"
-               ".mirror{fill:none;stroke:#1f5fa8;stroke-width:2;stroke-linecap:round}\n"
-               ".absorber{fill:none;stroke:#111;stroke-width:4;stroke-dasharray:6 3}\n"
+            << ".mirror{fill:none;stroke:#1f5fa8;stroke-width:" << element_stroke
+            << ";stroke-linecap:round}\n"
+            << ".absorber{fill:none;stroke:#111;stroke-width:" << 2 * element_stroke
+            << ";stroke-dasharray:" << 3 * element_stroke << " " << 1.5 * element_stroke
+            << "}\n"
                ".face-mirror{fill:#1f5fa8;fill-opacity:0.12;stroke:#1f5fa8;stroke-width:1}\n"
                ".face-absorber{fill:#111;fill-opacity:0.35;stroke:#111;stroke-width:1.5}\n"
                ".trajectory{fill:none;stroke:#e8730c;stroke-width:1.3;stroke-opacity:0.85;"
