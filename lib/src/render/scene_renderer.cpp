@@ -202,6 +202,13 @@ struct SceneRenderer::Impl {
         }
         page_width = cell_w * (views.size() > 1 ? 2 : 1);
         page_height = cell_h * static_cast<double>((views.size() + 1) / 2);
+        if (views.size() == 1) { // one view: the page fits it, without blank bands
+            View& v = views.front();
+            v.left = margin_left;
+            v.top = margin_top;
+            page_width = margin_left + v.width + margin_right;
+            page_height = margin_top + v.height + margin_bottom;
+        }
     }
 
     // Elements as compact path data: a segment where the view sees the
@@ -297,10 +304,25 @@ struct SceneRenderer::Impl {
 
     std::uint64_t segments() const { return visits > 0 ? visits - 1 : 0; }
 
-    bool thinned() const {
+    // The view that shows the most of the path: the 2D view, or in 3D the
+    // oblique one, since projections fold retraced segments onto each other
+    // as a matter of course.
+    const render::PathThinner& fullest_path() const {
+        const View* best = &views.front();
         for (const View& v : views)
-            if (v.path.drawn() < v.path.segments() || v.path.cut()) return true;
+            if (v.path.drawn() > best->path.drawn()) best = &v;
+        return best->path;
+    }
+
+    bool cut() const {
+        for (const View& v : views)
+            if (v.path.cut()) return true;
         return false;
+    }
+
+    bool thinned() const {
+        const render::PathThinner& path = fullest_path();
+        return path.drawn() < path.segments() || cut();
     }
 
     void write_view(std::ostream& out, const View& v, std::size_t index) const {
