@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
                  "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n\n"
                  "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
                  "3 a resource limit was reached before an answer.\n"
-                 "Scene format and rules: docs/scene-format.md, docs/semantics.md."};
+                 "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
+                 "docs/semantics.md. Pictures: docs/render.md."};
     app.name("orthoray");
     app.require_subcommand(1);
     app.set_version_flag("--version", "orthoray 0.1.0");
