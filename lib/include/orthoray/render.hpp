@@ -19,11 +19,11 @@ namespace orthoray {
 
 struct RenderOptions {
     int view_size = 640; // the longer side of one view's plot area, in pixels
-    // Caps that keep the file small whatever the scene and path: path
-    // vertices over all views, and element shapes over all views. Beyond
-    // them the picture is cut and the caption says so.
+    // Caps that keep the file small whatever the scene and path (together
+    // under about 8 MB): path vertices over all views, and element shapes
+    // over all views. Beyond them the picture is cut and the caption says so.
     std::size_t max_path_vertices = 200'000;
-    std::size_t max_element_shapes = 200'000;
+    std::size_t max_element_shapes = 100'000;
 };
 
 // How the drawn path ends, so the last piece can be drawn: on to the target

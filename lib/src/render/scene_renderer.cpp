@@ -472,6 +472,9 @@ struct SceneRenderer::Impl {
         const double element_stroke = elements_total <= 200    ? 2
                                       : elements_total <= 5000 ? 1.2
                                                                : 0.6;
+        // Likewise a dense path, so the mirrors still show through it.
+        const std::uint64_t drawn = fullest_path().drawn();
+        const double path_stroke = drawn <= 1000 ? 1.3 : drawn <= 20000 ? 0.8 : 0.4;
         out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
             << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number_text(page_width)
             << "\" height=\"" << number_text(page_height + caption_height) << "\" viewBox=\"0 "
@@ -491,9 +494,9 @@ struct SceneRenderer::Impl {
             << "}\n"
                ".face-mirror{fill:#1f5fa8;fill-opacity:0.12;stroke:#1f5fa8;stroke-width:1}\n"
                ".face-absorber{fill:#111;fill-opacity:0.35;stroke:#111;stroke-width:1.5}\n"
-               ".trajectory{fill:none;stroke:#e8730c;stroke-width:1.3;stroke-opacity:0.85;"
-               "stroke-linejoin:round}\n"
-               "circle.start{fill:#1a9a3a}\n"
+            << ".trajectory{fill:none;stroke:#e8730c;stroke-width:" << path_stroke
+            << ";stroke-opacity:0.85;stroke-linejoin:round}\n"
+            << "circle.start{fill:#1a9a3a}\n"
                ".start-arrow{fill:none;stroke:#1a9a3a;stroke-width:2.5}\n"
                "path.target{stroke:#d01c1c;stroke-width:2.5}\n"
                "circle.target{fill:none;stroke:#d01c1c;stroke-width:2}\n"
