@@ -229,3 +229,18 @@ TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render]") {
     REQUIRE(bytes.size() > 1000);
     CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
 }
+
+TEST_CASE("render and convert explain themselves with an example", "[cli]") {
+    for (const char* args : {"render --help", "convert --help"}) {
+        INFO("orthoray " << args);
+        const CliResult r = run_cli(args);
+        CHECK(r.status == 0);
+        CHECK(r.out.find("Example:") != std::string::npos);
+        const bool names_format = r.out.find("--format") != std::string::npos ||
+                                  r.out.find("--from") != std::string::npos;
+        CHECK(names_format);
+    }
+    const CliResult top = run_cli("--help");
+    CHECK(top.out.find("render") != std::string::npos);
+    CHECK(top.out.find("convert") != std::string::npos);
+}
