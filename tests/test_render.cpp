@@ -224,5 +224,11 @@ TEST_CASE("tick values are exact round numbers", "[render]") {
     const auto ticks = orthoray::render::axis_ticks(Rational(-7, 2), Rational(7, 2), 4);
     REQUIRE_FALSE(ticks.empty());
     CHECK(ticks.front().label == "-2");
-    CHECK(ticks.front().offset == 1.5);
+    CHECK(ticks.front().fraction == Approx(1.5 / 7));
+    // A span no double can hold still gets round, exact ticks.
+    const orthoray::Rational huge(orthoray::Integer("1" + std::string(400, '0')));
+    const auto far = orthoray::render::axis_ticks(0, huge, 4);
+    REQUIRE(far.size() >= 3);
+    CHECK(far[1].fraction == Approx(far.back().fraction / static_cast<double>(far.size() - 1)));
+    CHECK(far[1].label == "5e399");
 }

@@ -4,7 +4,6 @@
 #include "render/axis_ticks.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 namespace orthoray::render {
 namespace {
@@ -33,6 +32,19 @@ std::string decimal(const Integer& digits, long exponent) {
     return (digits < 0 ? "-" : "") + text;
 }
 
+// digits * 10^exponent as d.ddddde+N with at most 6 significant digits
+// (cut, not rounded), taken from the exact digits: the value may be far
+// beyond what a double holds.
+std::string scientific(const Integer& digits, long exponent) {
+    const std::string text = Integer(abs(digits)).get_str();
+    std::string mantissa = text.substr(0, 1);
+    std::string rest = text.substr(1, 5);
+    while (!rest.empty() && rest.back() == '0') rest.pop_back();
+    if (!rest.empty()) mantissa += "." + rest;
+    const long power = static_cast<long>(text.size()) - 1 + exponent;
+    return (digits < 0 ? "-" : "") + mantissa + "e" + std::to_string(power);
+}
+
 // Labels longer than this are shown with 6 significant digits: a tick that
 // names a 40-digit coordinate in full would cover its neighbours.
 constexpr std::size_t max_label = 10;
@@ -40,11 +52,17 @@ constexpr std::size_t max_label = 10;
 } // namespace
 
 std::vector<Tick> axis_ticks(const Rational& lo, const Rational& hi, int count) {
-    const double span = Rational(hi - lo).get_d();
-    double raw = span / count;
-    if (!(raw > 0) || !std::isfinite(raw)) return {};
-    long exponent = std::lround(std::floor(std::log10(raw)));
-    const double base = raw / std::pow(10.0, static_cast<double>(exponent));
+    const Rational span = hi - lo;
+    if (sgn(span) <= 0 || count < 1) return {};
+    // log10 of the step we would like, span / count; from the digit counts
+    // when the span is beyond a double.
+    double log_span = std::log10(span.get_d());
+    if (!std::isfinite(log_span))
+        log_span = static_cast<double>(mpz_sizeinbase(span.get_num_mpz_t(), 10)) -
+                   static_cast<double>(mpz_sizeinbase(span.get_den_mpz_t(), 10));
+    const double log_raw = log_span - std::log10(static_cast<double>(count));
+    long exponent = std::lround(std::floor(log_raw));
+    const double base = std::pow(10.0, log_raw - static_cast<double>(exponent));
     long m = base <= 1 ? 1 : base <= 2 ? 2 : base <= 5 ? 5 : 10;
     if (m == 10) {
         m = 1;
@@ -61,12 +79,8 @@ std::vector<Tick> axis_ticks(const Rational& lo, const Rational& hi, int count) 
     for (; k <= k_last && ticks.size() < 4 * static_cast<std::size_t>(count); ++k) {
         const Rational value = Rational(k) * step;
         std::string label = decimal(Integer(k * m), exponent);
-        if (label.size() > max_label) {
-            char buffer[32];
-            std::snprintf(buffer, sizeof buffer, "%.6g", value.get_d());
-            label = buffer;
-        }
-        ticks.push_back({Rational(value - lo).get_d(), label});
+        if (label.size() > max_label) label = scientific(Integer(k * m), exponent);
+        ticks.push_back({Rational((value - lo) / span).get_d(), label});
     }
     return ticks;
 }

@@ -11,7 +11,7 @@
 namespace orthoray::render {
 
 struct Tick {
-    double offset = 0; // value - lo, for placing the tick on the page
+    double fraction = 0; // (value - lo) / (hi - lo), for placing the tick on the page
     std::string label;
 };
 

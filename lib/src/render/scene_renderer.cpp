@@ -91,9 +91,11 @@ struct View {
 struct SceneRenderer::Impl {
     const Scene& scene;
     RenderOptions options;
-    std::array<Rational, 3> lo, hi; // the frame, exact
-    std::array<double, 3> unit{};   // normalised units per scene unit, per axis
-    std::array<double, 3> extent{}; // the frame's normalised size per axis
+    std::array<Rational, 3> lo, hi;    // the frame, exact
+    std::array<double, 3> unit{};      // normalised units per scene unit, per axis
+    std::array<double, 3> extent{};    // the frame's normalised size per axis
+    std::array<Rational, 3> width;     // hi - lo
+    std::array<bool, 3> exact_ratio{}; // the side does not fit a double: divide exactly
     bool separate_scales = false;
     std::vector<View> views;
     double page_width = 0, page_height = 0;
@@ -148,23 +150,40 @@ struct SceneRenderer::Impl {
             const Rational pad = (separate_scales ? Rational(hi[j] - lo[j]) : longest) / 25;
             lo[j] -= pad;
             hi[j] += pad;
-            span[j] = Rational(hi[j] - lo[j]).get_d();
+            width[j] = hi[j] - lo[j];
+            span[j] = width[j].get_d();
+            // Beyond this a double cannot hold the side, or its reciprocal.
+            exact_ratio[j] = !(span[j] >= 1e-280 && span[j] <= 1e280);
+            separate_scales = separate_scales || exact_ratio[j];
         }
         max_span = *std::max_element(span.begin(), span.begin() + dim);
         for (int j = 0; j < dim; ++j) {
             unit[j] = separate_scales ? 1 / span[j] : 1 / max_span;
-            extent[j] = span[j] * unit[j];
-            if (!std::isfinite(unit[j]) || !(extent[j] > 0)) unit[j] = 0, extent[j] = 1;
+            extent[j] = exact_ratio[j] ? 1 : span[j] * unit[j];
         }
     }
 
+    // A coordinate in normalised units. Usually (p - lo) is exact and its
+    // double is scaled; a side too long or too short for a double is
+    // divided out exactly first.
     Point3 normalised(const Vector& p) const {
         Point3 n{0, 0, 0};
         for (int j = 0; j < scene.dim; ++j) {
             mpq_sub(difference.get_mpq_t(), p[j].get_mpq_t(), lo[j].get_mpq_t());
-            n[j] = difference.get_d() * unit[j];
+            if (exact_ratio[j]) {
+                mpq_div(difference.get_mpq_t(), difference.get_mpq_t(), width[j].get_mpq_t());
+                n[j] = difference.get_d();
+            } else {
+                n[j] = difference.get_d() * unit[j];
+            }
         }
         return n;
+    }
+
+    // A direction component in normalised units, divided out exactly: the
+    // scene's numbers may be beyond what a double holds.
+    double normalised_component(const Rational& v, int j) const {
+        return Rational(v / width[j]).get_d() * extent[j];
     }
 
     void layout() {
@@ -284,7 +303,7 @@ struct SceneRenderer::Impl {
             double longest = 0;
             Point3 v{0, 0, 0};
             for (int j = 0; j < scene.dim; ++j) {
-                v[j] = e.direction[j].get_d() * unit[j];
+                v[j] = normalised_component(e.direction[j], j);
                 longest = std::max(longest, std::abs(v[j]));
             }
             if (!(longest > 0) || !std::isfinite(longest)) return;
@@ -359,7 +378,7 @@ struct SceneRenderer::Impl {
             const double length = horizontal ? v.width : v.height;
             const int count = std::max(2, static_cast<int>(length / 90));
             for (const render::Tick& t : render::axis_ticks(lo[axis], hi[axis], count)) {
-                const double pos = t.offset * unit[axis] * v.scale;
+                const double pos = t.fraction * extent[axis] * v.scale;
                 if (horizontal)
                     out << "<line class=\"tick\" x1=\"" << number_text(v.left + pos) << "\" y1=\""
                         << number_text(bottom) << "\" x2=\"" << number_text(v.left + pos)
@@ -408,7 +427,7 @@ struct SceneRenderer::Impl {
         Point3 ahead = from, d{0, 0, 0};
         double largest = 0;
         for (int j = 0; j < scene.dim; ++j) {
-            d[j] = scene.direction[j].get_d() * unit[j];
+            d[j] = normalised_component(scene.direction[j], j);
             largest = std::max(largest, std::abs(d[j]));
         }
         if (largest > 0 && std::isfinite(largest))
