@@ -153,6 +153,8 @@ TEST_CASE("malformed JSON is reported at its line and column", "[json][errors]")
         {"\"abc", "t.json:1:1: found '\"abc', expected valid JSON (invalid string: missing "
                   "closing quote)"},
         {"{} x", "t.json:1:4: found 'x', expected valid JSON (invalid literal)"},
+        {"{\"dim\": 1e999}", "t.json:1:9: found '1e999', expected a number a double can hold "
+                             "(write exact numbers as strings)"},
     };
     for (const Case& c : cases) {
         INFO(c.text);

@@ -107,7 +107,13 @@ public:
         const std::size_t end = end_offset();
         std::size_t offset = text_.size();
         std::string found = "end of file", expected;
-        if (problem.rfind("unexpected ", 0) == 0) {
+        if (what.find("number overflow") != std::string::npos) {
+            // nlohmann gives up on a number no double holds (1e999); we
+            // never convert numbers, but the parse has stopped.
+            offset = number_start();
+            found = quoted_token(text_.substr(offset, number_end(offset) - offset));
+            expected = "a number a double can hold (write exact numbers as strings)";
+        } else if (problem.rfind("unexpected ", 0) == 0) {
             const std::string token = problem.substr(11);
             const std::size_t expected_at = what.find("; expected ");
             expected =

@@ -11,7 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <functional>
+#include <numbers>
 #include <unordered_set>
 
 namespace orthoray {
@@ -31,7 +31,8 @@ constexpr double caption_line = 18;
 constexpr double max_aspect = 8;
 
 // The oblique view: x to the right, z up, y receding at 30 degrees.
-const double oblique_x = 0.5 * std::cos(M_PI / 6), oblique_y = 0.5 * std::sin(M_PI / 6);
+const double oblique_x = 0.5 * std::cos(std::numbers::pi / 6),
+             oblique_y = 0.5 * std::sin(std::numbers::pi / 6);
 
 std::string number_text(double value) {
     char buffer[32];
@@ -104,7 +105,7 @@ struct SceneRenderer::Impl {
 
     mutable Rational difference; // reused: a path may have 10^7 points
 
-    std::optional<Point3> start, last;
+    std::optional<Point3> last;
     std::uint64_t visits = 0;
     std::optional<PathEnd> end;
 
@@ -287,7 +288,6 @@ struct SceneRenderer::Impl {
 
     void visit(const Vector& point) {
         const Point3 n = normalised(point);
-        if (!start) start = n;
         if (last) segment(*last, n);
         last = n;
         ++visits;
