@@ -1,10 +1,10 @@
-// Lays out the views of a scene and writes the SVG. Every coordinate is
-// first made relative to the picture's frame in exact rationals and only then
-// turned into a double, so scenes far from the origin or with 40-digit
-// coordinates still draw in the right place.
+// Lays out the views of a scene, draws the elements and the streamed path
+// into them, and writes the SVG. Coordinates reach this file already
+// normalised by the exact frame (frame.cpp).
 #include "orthoray/render.hpp"
 
 #include "render/axis_ticks.hpp"
+#include "render/frame.hpp"
 #include "render/path_thinner.hpp"
 
 #include <algorithm>
@@ -17,7 +17,7 @@
 namespace orthoray {
 namespace {
 
-using Point3 = std::array<double, 3>;
+using render::Point3;
 struct Pixel {
     double x = 0, y = 0;
 };
@@ -25,10 +25,6 @@ struct Pixel {
 // Page layout, in pixels.
 constexpr double margin_left = 78, margin_right = 24, margin_top = 30, margin_bottom = 46;
 constexpr double caption_line = 18;
-
-// If the longest side of the scene is more than this many times the
-// shortest, each axis is scaled on its own (the caption says so).
-constexpr double max_aspect = 8;
 
 // The oblique view: x to the right, z up, y receding at 30 degrees.
 const double oblique_x = 0.5 * std::cos(std::numbers::pi / 6),
@@ -92,99 +88,19 @@ struct View {
 struct SceneRenderer::Impl {
     const Scene& scene;
     RenderOptions options;
-    std::array<Rational, 3> lo, hi;    // the frame, exact
-    std::array<double, 3> unit{};      // normalised units per scene unit, per axis
-    std::array<double, 3> extent{};    // the frame's normalised size per axis
-    std::array<Rational, 3> width;     // hi - lo
-    std::array<bool, 3> exact_ratio{}; // the side does not fit a double: divide exactly
-    bool separate_scales = false;
+    render::Frame frame;
     std::vector<View> views;
     double page_width = 0, page_height = 0;
     std::vector<std::string> caption;
     std::size_t elements_drawn = 0, elements_total = 0;
 
-    mutable Rational difference; // reused: a path may have 10^7 points
-
     std::optional<Point3> last;
     std::uint64_t visits = 0;
     std::optional<PathEnd> end;
 
-    Impl(const Scene& s, const RenderOptions& o) : scene(s), options(o) {
-        frame();
+    Impl(const Scene& s, const RenderOptions& o) : scene(s), options(o), frame(s) {
         layout();
         draw_elements();
-    }
-
-    // The box around elements, start and target; a side of length zero gets
-    // the longest side's length. Padded by 4% of the longest side, or of
-    // each side when the sides are scaled separately.
-    void frame() {
-        const int dim = scene.dim;
-        auto include = [&](const Vector& p, bool first) {
-            for (int j = 0; j < dim; ++j) {
-                if (first || p[j] < lo[j]) lo[j] = p[j];
-                if (first || p[j] > hi[j]) hi[j] = p[j];
-            }
-        };
-        include(scene.start, true);
-        include(scene.target, false);
-        for (const Element& e : scene.elements) {
-            include(e.lo, false);
-            include(e.hi, false);
-        }
-        Rational longest = 0;
-        for (int j = 0; j < dim; ++j) longest = std::max<Rational>(longest, hi[j] - lo[j]);
-        if (longest == 0) longest = 1;
-        std::array<double, 3> span{1, 1, 1};
-        double max_span = 0, min_span = HUGE_VAL;
-        for (int j = 0; j < dim; ++j) {
-            if (hi[j] == lo[j]) {
-                lo[j] -= longest / 2;
-                hi[j] += longest / 2;
-            }
-            span[j] = Rational(hi[j] - lo[j]).get_d();
-            max_span = std::max(max_span, span[j]);
-            min_span = std::min(min_span, span[j]);
-        }
-        separate_scales = !(max_span <= max_aspect * min_span) || !std::isfinite(max_span);
-        for (int j = 0; j < dim; ++j) {
-            const Rational pad = (separate_scales ? Rational(hi[j] - lo[j]) : longest) / 25;
-            lo[j] -= pad;
-            hi[j] += pad;
-            width[j] = hi[j] - lo[j];
-            span[j] = width[j].get_d();
-            // Beyond this a double cannot hold the side, or its reciprocal.
-            exact_ratio[j] = !(span[j] >= 1e-280 && span[j] <= 1e280);
-            separate_scales = separate_scales || exact_ratio[j];
-        }
-        max_span = *std::max_element(span.begin(), span.begin() + dim);
-        for (int j = 0; j < dim; ++j) {
-            unit[j] = separate_scales ? 1 / span[j] : 1 / max_span;
-            extent[j] = exact_ratio[j] ? 1 : span[j] * unit[j];
-        }
-    }
-
-    // A coordinate in normalised units. Usually (p - lo) is exact and its
-    // double is scaled; a side too long or too short for a double is
-    // divided out exactly first.
-    Point3 normalised(const Vector& p) const {
-        Point3 n{0, 0, 0};
-        for (int j = 0; j < scene.dim; ++j) {
-            mpq_sub(difference.get_mpq_t(), p[j].get_mpq_t(), lo[j].get_mpq_t());
-            if (exact_ratio[j]) {
-                mpq_div(difference.get_mpq_t(), difference.get_mpq_t(), width[j].get_mpq_t());
-                n[j] = difference.get_d();
-            } else {
-                n[j] = difference.get_d() * unit[j];
-            }
-        }
-        return n;
-    }
-
-    // A direction component in normalised units, divided out exactly: the
-    // scene's numbers may be beyond what a double holds.
-    double normalised_component(const Rational& v, int j) const {
-        return Rational(v / width[j]).get_d() * extent[j];
     }
 
     void layout() {
@@ -197,8 +113,10 @@ struct SceneRenderer::Impl {
             v.a = a;
             v.b = b;
             v.oblique = oblique;
-            const double w = oblique ? extent[0] + oblique_x * extent[1] : extent[a];
-            const double h = oblique ? extent[2] + oblique_y * extent[1] : extent[b];
+            const double w =
+                oblique ? frame.extent[0] + oblique_x * frame.extent[1] : frame.extent[a];
+            const double h =
+                oblique ? frame.extent[2] + oblique_y * frame.extent[1] : frame.extent[b];
             v.scale = size / std::max(w, h);
             v.width = w * v.scale;
             v.height = h * v.scale;
@@ -241,7 +159,7 @@ struct SceneRenderer::Impl {
             std::unordered_set<std::string> seen;
             for (const Element& e : scene.elements) {
                 if (v.shapes >= cap) break;
-                Point3 c0 = normalised(e.lo), c1 = normalised(e.hi);
+                Point3 c0 = frame.normalised(e.lo), c1 = frame.normalised(e.hi);
                 std::vector<Pixel> corners;
                 bool face = false;
                 if (scene.dim == 2 || (!v.oblique && (e.axis == v.a || e.axis == v.b))) {
@@ -287,7 +205,7 @@ struct SceneRenderer::Impl {
     }
 
     void visit(const Vector& point) {
-        const Point3 n = normalised(point);
+        const Point3 n = frame.normalised(point);
         if (last) segment(*last, n);
         last = n;
         ++visits;
@@ -297,20 +215,20 @@ struct SceneRenderer::Impl {
         end = e;
         if (!last) return;
         if (e.reason == Reason::hit) {
-            segment(*last, normalised(scene.target));
+            segment(*last, frame.normalised(scene.target));
         } else if (e.reason == Reason::escape) {
             // Out along the final direction to the frame's edge.
             double longest = 0;
             Point3 v{0, 0, 0};
             for (int j = 0; j < scene.dim; ++j) {
-                v[j] = normalised_component(e.direction[j], j);
+                v[j] = frame.normalised_component(e.direction[j], j);
                 longest = std::max(longest, std::abs(v[j]));
             }
             if (!(longest > 0) || !std::isfinite(longest)) return;
             double t = HUGE_VAL;
             for (int j = 0; j < scene.dim; ++j) {
                 v[j] /= longest;
-                if (v[j] > 0) t = std::min(t, (extent[j] - (*last)[j]) / v[j]);
+                if (v[j] > 0) t = std::min(t, (frame.extent[j] - (*last)[j]) / v[j]);
                 if (v[j] < 0) t = std::min(t, -(*last)[j] / v[j]);
             }
             if (t > 0 && std::isfinite(t)) {
@@ -377,8 +295,9 @@ struct SceneRenderer::Impl {
         auto axis_line = [&](int axis, bool horizontal) {
             const double length = horizontal ? v.width : v.height;
             const int count = std::max(2, static_cast<int>(length / 90));
-            for (const render::Tick& t : render::axis_ticks(lo[axis], hi[axis], count)) {
-                const double pos = t.fraction * extent[axis] * v.scale;
+            for (const render::Tick& t :
+                 render::axis_ticks(frame.lo[axis], frame.hi[axis], count)) {
+                const double pos = t.fraction * frame.extent[axis] * v.scale;
                 if (horizontal)
                     out << "<line class=\"tick\" x1=\"" << number_text(v.left + pos) << "\" y1=\""
                         << number_text(bottom) << "\" x2=\"" << number_text(v.left + pos)
@@ -408,7 +327,7 @@ struct SceneRenderer::Impl {
         const Pixel o = v.map({0, 0, 0});
         for (int j = 0; j < 3; ++j) {
             Point3 tip{0, 0, 0};
-            tip[j] = extent[j] * 0.25;
+            tip[j] = frame.extent[j] * 0.25;
             const Pixel p = v.map(tip);
             out << "<line class=\"axis-arrow\" x1=\"" << number_text(o.x) << "\" y1=\""
                 << number_text(o.y) << "\" x2=\"" << number_text(p.x) << "\" y2=\""
@@ -419,15 +338,15 @@ struct SceneRenderer::Impl {
 
     void write_markers(std::ostream& out, const View& v) const {
         // Start: a dot and an arrow along the start direction as this view sees it.
-        const Pixel s = v.map(normalised(scene.start));
+        const Pixel s = v.map(frame.normalised(scene.start));
 
         // The direction in normalised units, scaled so its largest part is
         // 1 (the scene's numbers may be far beyond what a double can divide).
-        const Point3 from = normalised(scene.start);
+        const Point3 from = frame.normalised(scene.start);
         Point3 ahead = from, d{0, 0, 0};
         double largest = 0;
         for (int j = 0; j < scene.dim; ++j) {
-            d[j] = normalised_component(scene.direction[j], j);
+            d[j] = frame.normalised_component(scene.direction[j], j);
             largest = std::max(largest, std::abs(d[j]));
         }
         if (largest > 0 && std::isfinite(largest))
@@ -451,7 +370,7 @@ struct SceneRenderer::Impl {
             out << "<rect class=\"absorbed\" x=\"" << number_text(p.x - 5) << "\" y=\""
                 << number_text(p.y - 5) << "\" width=\"10\" height=\"10\"/>\n";
         }
-        const Pixel t = v.map(normalised(scene.target));
+        const Pixel t = v.map(frame.normalised(scene.target));
         out << "<path class=\"target\" d=\"M" << number_text(t.x - 7) << " " << number_text(t.y - 7)
             << "L" << number_text(t.x + 7) << " " << number_text(t.y + 7) << "M"
             << number_text(t.x - 7) << " " << number_text(t.y + 7) << "L" << number_text(t.x + 7)
@@ -478,7 +397,7 @@ struct SceneRenderer::Impl {
         if (elements_drawn < elements_total)
             lines.push_back("elements: " + std::to_string(elements_drawn) + " of " +
                             std::to_string(elements_total) + " drawn in a view (shape cap)");
-        if (separate_scales)
+        if (frame.separate_scales)
             lines.push_back("axes scaled separately (the scene is very elongated)");
         return lines;
     }
