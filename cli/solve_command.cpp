@@ -129,13 +129,16 @@ Command add_solve(CLI::App& app) {
     cmd->add_flag("--json", args->json,
                   "print one JSON object: answer, reason, reflections, period (cycles), "
                   "engine, arithmetic, seconds");
-    cmd->add_option("--certificate", args->certificate,
-                    "stream the certificate (docs/certificates.md) to this file; check it with "
-                    "'orthoray verify'");
+    CLI::Option* certificate =
+        cmd->add_option("--certificate", args->certificate,
+                        "stream the certificate (docs/certificates.md) to this file; check it "
+                        "with 'orthoray verify'");
+    // A format without a file would be silently ignored.
     cmd->add_option("--certificate-format", args->certificate_format,
                     "text (default) or jsonl: JSON Lines, one JSON object a line, for other "
                     "tools; 'verify' and 'render' read both (docs/certificates.md)")
-        ->check(CLI::IsMember({"text", "jsonl"}));
+        ->check(CLI::IsMember({"text", "jsonl"}))
+        ->needs(certificate);
     CLI::Option* max_steps =
         cmd->add_option("--max-steps", args->max_steps,
                         "perform at most N reflections; without an answer by then, answer unknown "

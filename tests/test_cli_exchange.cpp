@@ -174,7 +174,12 @@ TEST_CASE("JSON Lines certificates verify, and tampered ones do not", "[cli][jso
     require_bad_input(malformed);
     CHECK(malformed.err.rfind(broken + ":2:", 0) == 0);
 
-    require_bad_input(run_cli("solve " + quote(scene) + " --certificate-format xml"));
+    require_bad_input(run_cli("solve " + quote(scene) + " --certificate " + quote(cert) +
+                              " --certificate-format xml"));
+    // A format without a file to write is a usage error, not silently ignored.
+    const CliResult no_file = run_cli("solve " + quote(scene) + " --certificate-format jsonl");
+    require_bad_input(no_file);
+    CHECK(no_file.err.find("--certificate") != std::string::npos);
 }
 
 TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli][render]") {
