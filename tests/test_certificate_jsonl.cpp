@@ -165,4 +165,16 @@ TEST_CASE("malformed JSON Lines are reported at their line and column",
     CHECK(changed(0, "{\"orthoray-certificate\": 1, \"dim\": 3}") ==
           "c.jsonl:1:36: found '3', expected '2' (the scene's dim)");
     CHECK(changed(9, "{\"end\": false}") == "c.jsonl:10:9: found 'false', expected no more values");
+
+    // The cycle's state object holds exactly a point and a direction.
+    const Scene square = orthoray::read_scene("dim 2\nmirror x 0 y 0 1\nmirror x 1 y 0 1\n"
+                                              "ray 0 1/2 1 0\ntarget 5 5\n");
+    auto cycle = lines_of(certify(square, CertificateFormat::jsonl));
+    REQUIRE(cycle[cycle.size() - 2].find("\"state\": {\"point\"") != std::string::npos);
+    CHECK(verify(square, join(cycle)) == "valid: cycle, 2 reflections");
+    std::string& verdict = cycle[cycle.size() - 2];
+    verdict.replace(verdict.find("\"direction\""), 11, "\"heading\"");
+    const std::string message = verify(square, join(cycle));
+    CHECK(message.find("found the key \"heading\", expected \"point\" or \"direction\"") !=
+          std::string::npos);
 }

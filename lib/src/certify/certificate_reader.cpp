@@ -145,6 +145,11 @@ void CertificateReader::split_json() {
             if (value.type == JsonValue::Type::array) {
                 for (const JsonValue& item : value.items) s.tokens.push_back(operand(item));
             } else if (value.type == JsonValue::Type::object) {
+                for (std::size_t k = 0; k < value.keys.size(); ++k)
+                    if (value.keys[k] != "point" && value.keys[k] != "direction")
+                        throw InputError(name_, line, value.key_columns[k],
+                                         "found the key " + io::json_quoted(value.keys[k]) +
+                                             ", expected \"point\" or \"direction\"");
                 for (std::string_view part : {"point", "direction"})
                     if (const JsonValue* p = value.find(part))
                         for (const JsonValue& item : p->items) s.tokens.push_back(operand(item));
