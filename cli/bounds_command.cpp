@@ -3,6 +3,7 @@
 #include "orthoray/bounds.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
+#include "scene_format_option.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -15,7 +16,7 @@ namespace orthoray::cli {
 namespace {
 
 struct BoundsArgs {
-    std::string file;
+    std::string file, format;
     bool json = false, no_pieces = false;
 };
 
@@ -80,11 +81,12 @@ Command add_bounds(CLI::App& app) {
         "Example:\n"
         "  orthoray bounds instances/2d/box-corner-3x5.scene --json\n"
         "  {\"dim\":2,\"scale\":[1,1],...,\"lattice_states\":64,...,\"refined_states\":32,...}");
-    cmd->add_option("FILE", args->file, "the .scene file")->required();
+    cmd->add_option("FILE", args->file, "the scene (.scene text or .json)")->required();
+    add_scene_format_option(cmd, args->format);
     cmd->add_flag("--json", args->json, "print one JSON object (big integers exact)");
     cmd->add_flag("--no-pieces", args->no_pieces, "do not build the 2D piece tables");
     return [args] {
-        const Scene scene = load_scene(args->file);
+        const Scene scene = load_scene(args->file, scene_format_named(args->format));
         const StateBounds b = compute_bounds(scene, !args->no_pieces);
         if (args->json)
             print_json(b);

@@ -25,5 +25,8 @@ Command add_verify(CLI::App& app);
 Command add_pieces(CLI::App& app);
 Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
+Command add_convert(CLI::App& app);
+Command add_render(CLI::App& app);
+
 
 } // namespace orthoray::cli

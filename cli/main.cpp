@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
                  "  orthoray bounds box.scene\n\n"
                  "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
                  "3 a resource limit was reached before an answer.\n"
-                 "Scene format and rules: docs/scene-format.md, docs/semantics.md."};
+                 "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
+                 "docs/semantics.md. Pictures: docs/render.md."};
     app.name("orthoray");
     app.require_subcommand(1);
     app.set_version_flag("--version", "orthoray 0.1.0");
@@ -26,6 +27,9 @@ int main(int argc, char** argv) {
     Command pieces = add_pieces(app);
     Command generate = add_generate(app);
     Command bounds = add_bounds(app);
+    Command render = add_render(app);
+    Command convert = add_convert(app);
+
     // CLI11 would call an unknown command a missing one; name it instead.
     auto is_command = [&](const char* word) {
         for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
@@ -33,9 +37,9 @@ int main(int argc, char** argv) {
         return false;
     };
     if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
-        std::cerr
-            << "orthoray: found the command '" << argv[1]
-            << "', expected solve, verify, pieces, generate or bounds (see 'orthoray --help')\n";
+        std::cerr << "orthoray: found the command '" << argv[1]
+                  << "', expected solve, verify, pieces, generate, bounds, render or convert (see "
+                     "'orthoray --help')\n";
         return bad_input;
     }
     try {
@@ -50,6 +54,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("verify")) return verify();
         if (app.got_subcommand("generate")) return generate();
         if (app.got_subcommand("bounds")) return bounds();
+        if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("convert")) return convert();
         return pieces();
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';

@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/pieces.hpp"
+#include "scene_format_option.hpp"
 
 #include <iostream>
 #include <memory>
@@ -11,6 +12,7 @@ namespace orthoray::cli {
 
 Command add_pieces(CLI::App& app) {
     auto file = std::make_shared<std::string>();
+    auto format = std::make_shared<std::string>();
     CLI::App* cmd = app.add_subcommand(
         "pieces", "Print the 2D piece tables: for each mirror and each of the four diagonal\n"
                   "directions, the runs of positions that reach the same next mirror by the\n"
@@ -18,9 +20,10 @@ Command add_pieces(CLI::App& app) {
                   "Coordinates are the scene's lattice coordinates (docs/lattice.md).\n\n"
                   "Example:\n"
                   "  orthoray pieces instances/2d/box-corner-3x5.scene");
-    cmd->add_option("FILE", *file, "a 2D .scene file whose ray moves in both x and y")->required();
-    return [file] {
-        const Scene scene = load_scene(*file);
+    cmd->add_option("FILE", *file, "a 2D scene whose ray moves in both x and y")->required();
+    add_scene_format_option(cmd, *format);
+    return [file, format] {
+        const Scene scene = load_scene(*file, scene_format_named(*format));
         std::ostringstream out; // nothing reaches stdout unless the tables exist
         if (!write_piece_tables(scene, out).available)
             throw UsageError("piece tables exist only for 2D scenes whose ray moves in both x and "

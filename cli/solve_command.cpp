@@ -3,6 +3,7 @@
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "scene_format_option.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +19,7 @@ namespace orthoray::cli {
 namespace {
 
 struct SolveArgs {
-    std::string file, certificate;
+    std::string file, certificate, format, certificate_format = "text";
     bool json = false;
     std::uint64_t max_steps = 0;
     std::string engine = "lattice", detector = "first-state", arithmetic = "auto", shooter = "auto";
@@ -74,7 +75,8 @@ void print_text(const Answer& a, double seconds) {
 }
 
 int run(const SolveArgs& args, const CLI::Option* max_steps) {
-    const Scene scene = load_scene(args.file); // bad input ends here, before any output
+    const Scene scene = load_scene(
+        args.file, scene_format_named(args.format)); // bad input ends here, before any output
     SolveOptions options;
     options.engine = engines.at(args.engine);
     options.cycle_detector = detectors.at(args.detector);
@@ -88,7 +90,10 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
         cert_file.open(args.certificate, std::ios::binary | std::ios::trunc);
         if (!cert_file)
             throw UsageError("cannot write the certificate file '" + args.certificate + "'");
-        writer = std::make_unique<CertificateWriter>(cert_file, scene);
+        writer = std::make_unique<CertificateWriter>(cert_file, scene,
+                                                     args.certificate_format == "jsonl"
+                                                         ? CertificateFormat::jsonl
+                                                         : CertificateFormat::text);
         options.path = writer.get();
     }
     auto begin = std::chrono::steady_clock::now();
@@ -118,14 +123,23 @@ Command add_solve(CLI::App& app) {
                  "reflections; answer no: it escapes to infinity, is absorbed, or is periodic\n"
                  "(reason cycle; `period` reflections per period) without passing the target.\n"
                  "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 --max-steps reached.");
-    cmd->add_option("FILE", args->file, "the .scene file (format: docs/scene-format.md)")
+    cmd->add_option("FILE", args->file,
+                    "the scene: .scene text (docs/scene-format.md) or JSON (docs/scene-json.md)")
         ->required();
+    add_scene_format_option(cmd, args->format);
     cmd->add_flag("--json", args->json,
                   "print one JSON object: answer, reason, reflections, period (cycles), "
                   "engine, arithmetic, seconds");
-    cmd->add_option("--certificate", args->certificate,
-                    "stream the certificate (docs/certificates.md) to this file; check it with "
-                    "'orthoray verify'");
+    CLI::Option* certificate =
+        cmd->add_option("--certificate", args->certificate,
+                        "stream the certificate (docs/certificates.md) to this file; check it "
+                        "with 'orthoray verify'");
+    // A format without a file would be silently ignored.
+    cmd->add_option("--certificate-format", args->certificate_format,
+                    "text (default) or jsonl: JSON Lines, one JSON object a line, for other "
+                    "tools; 'verify' and 'render' read both (docs/certificates.md)")
+        ->check(CLI::IsMember({"text", "jsonl"}))
+        ->needs(certificate);
     CLI::Option* max_steps =
         cmd->add_option("--max-steps", args->max_steps,
                         "perform at most N reflections; without an answer by then, answer unknown "

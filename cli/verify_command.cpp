@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
+#include "scene_format_option.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -11,11 +12,11 @@ namespace orthoray::cli {
 namespace {
 
 struct VerifyArgs {
-    std::string file, certificate;
+    std::string file, certificate, format;
 };
 
 int run(const VerifyArgs& args) {
-    const Scene scene = load_scene(args.file);
+    const Scene scene = load_scene(args.file, scene_format_named(args.format));
     std::ifstream cert(args.certificate, std::ios::binary);
     if (!cert) read_file(args.certificate); // throws the usual FILE:1:1 message
     const Verdict verdict = verify_certificate(scene, cert, args.certificate);
@@ -35,8 +36,9 @@ Command add_verify(CLI::App& app) {
                   "  valid: hit, 6 reflections\n\n"
                   "Exit status: 0 valid, 1 invalid (the first failing step is printed),\n"
                   "2 unreadable or malformed scene or certificate.");
-    cmd->add_option("FILE", args->file, "the .scene file")->required();
+    cmd->add_option("FILE", args->file, "the scene (.scene text or JSON)")->required();
     cmd->add_option("CERT", args->certificate, "the certificate file")->required();
+    add_scene_format_option(cmd, args->format);
     return [args] { return run(*args); };
 }
 

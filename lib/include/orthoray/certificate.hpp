@@ -12,17 +12,26 @@
 
 namespace orthoray {
 
+enum class CertificateFormat {
+    text,  // one statement a line
+    jsonl, // JSON Lines: one JSON object a line, for other tools
+};
+
 // Streams a certificate while a solver runs: attach it as SolveOptions::path,
 // then call finish() with the answer. Memory stays O(1) in the path length.
 class CertificateWriter : public PathSink {
 public:
-    CertificateWriter(std::ostream& out, const Scene& scene);
+    CertificateWriter(std::ostream& out, const Scene& scene,
+                      CertificateFormat format = CertificateFormat::text);
     void visit(const Vector& point, const Vector& direction) override;
     void finish(const Answer& answer);
 
 private:
+    void write_vector(const Vector& x);
+
     std::ostream& out_;
     const Scene& scene_;
+    CertificateFormat format_;
     std::uint64_t visits_ = 0;
     Vector first_reflection_point_, first_reflection_direction_;
     Vector last_direction_;
@@ -33,9 +42,25 @@ struct Verdict {
     std::string message; // "valid: ..." or the first failing step
 };
 
-// Checks a certificate against the scene with plain rational geometry that
+// Checks a certificate (either format, recognised from its first line)
+// against the scene with plain rational geometry that
 // shares no code with the solvers. A malformed certificate throws InputError.
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name = "<certificate>");
+
+// What a certificate claims, read without being checked (verify checks it).
+struct CertificateClaim {
+    bool complete = false; // the verdict and the final 'end' are there
+    std::string answer;    // yes, no or unknown
+    Reason reason = Reason::limit;
+    Integer reflections;
+    Vector direction; // escape: the final ray's direction
+};
+
+// Streams a certificate's points (either format) to `sink`, with a zero
+// direction since the file lists points only, and returns its verdict. For
+// drawing paths; a malformed certificate throws InputError.
+CertificateClaim read_certificate_path(const Scene& scene, std::istream& certificate,
+                                       const std::string& certificate_name, PathSink& sink);
 
 } // namespace orthoray

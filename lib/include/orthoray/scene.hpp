@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace orthoray {
@@ -53,5 +54,8 @@ char axis_name(int axis);
 
 // The scene in the .scene text format; read_scene(write_scene(s)) == s.
 std::string write_scene(const Scene& scene);
+
+// The scene as JSON (docs/scene-json.md); read_scene_json(write_scene_json(s)) == s.
+std::string write_scene_json(const Scene& scene);
 
 } // namespace orthoray

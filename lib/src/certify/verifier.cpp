@@ -1,19 +1,18 @@
 // The independent certificate checker (docs/certificates.md). It replays the
 // listed path with its own "first element met" scan in plain rationals and
 // shares no code with any solver, so trusting an answer only means trusting
-// this file and the scene parser. The certificate is read as a stream: the
+// this file, the scene parser and the certificate tokenizer
+// (certificate_reader.cpp, pure parsing). The certificate is read as a stream: the
 // path may have 10^8 points, so only the current state, state 1 and counters
 // are kept, never the points themselves.
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 
-#include "io/quoted_token.hpp"
+#include "certify/certificate_reader.hpp"
 
 #include <array>
-#include <climits>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <istream>
 #include <optional>
 #include <string>
@@ -23,124 +22,6 @@
 
 namespace orthoray {
 namespace {
-
-// Thrown when the stream ends before 'end': a truncated file is a verdict
-// (it never verifies), not a syntax error.
-struct Incomplete {};
-
-int clamp_int(long long value) {
-    return value > INT_MAX ? INT_MAX : static_cast<int>(value);
-}
-
-// ---------------------------------------------------------------- reading --
-
-struct Token {
-    std::string_view text;
-    int column = 0; // 1-based
-};
-
-// Reads the certificate one statement at a time and produces the InputErrors
-// with the file, line and column of the offending token.
-
-class Reader {
-public:
-    Reader(std::istream& in, const std::string& name) : in_(in), name_(name) {}
-
-    // Moves to the next non-blank statement; false at the end of the stream.
-    bool next() {
-        while (std::getline(in_, line_)) {
-            ++line_number_;
-            split();
-            if (!tokens_.empty()) return true;
-        }
-        return false;
-    }
-
-    // Like next(), but the stream must not end here.
-    void advance() {
-        if (!next()) throw Incomplete{};
-    }
-
-    std::string_view keyword() const { return tokens_[0].text; }
-    std::string_view token(std::size_t index) const { return tokens_[index].text; }
-
-    // The token at `index` (or the end of the line) is wrong.
-    [[noreturn]] void fail(std::size_t index, const std::string& expected) const {
-        std::string found;
-        int column = 0;
-        if (index < tokens_.size()) {
-            found = io::quoted_token(tokens_[index].text);
-            column = tokens_[index].column;
-        } else {
-            found = "end of line";
-            column = end_column_;
-        }
-        throw InputError(name_, clamp_int(line_number_), column,
-                         "found " + found + ", expected " + expected);
-    }
-
-    // The statement must be `keyword` followed by exactly `operands` tokens,
-    // each described by `operand` in the error when it is missing.
-    void expect(std::string_view keyword, std::size_t operands, const std::string& operand) const {
-        if (tokens_[0].text != keyword) fail(0, std::string("'").append(keyword).append("'"));
-        if (tokens_.size() < operands + 1) fail(tokens_.size(), operand);
-        if (tokens_.size() > operands + 1) fail(operands + 1, "end of line");
-    }
-
-    Rational number(std::size_t index) const {
-        NumberToken token = read_number(tokens_[index].text);
-        if (token.status == NumberToken::Status::zero_denominator)
-            fail(index, "a number with a nonzero denominator");
-        if (token.status != NumberToken::Status::ok) fail(index, "a number");
-        token.value.canonicalize(); // equality tests below need canonical form
-        return token.value;
-    }
-
-    // `dim` numbers from token `first` on; the unused slots stay zero.
-    Vector vector(std::size_t first, int dim) const {
-        Vector result;
-        for (int j = 0; j < dim; ++j) result[j] = number(first + j);
-        return result;
-    }
-
-    // Counts are written in full by the solver, so only plain digits are
-    // accepted; they may exceed 64 bits.
-    Integer count(std::size_t index) const {
-        const std::string_view text = tokens_[index].text;
-        if (text.find_first_not_of("0123456789") != std::string_view::npos)
-            fail(index, "a non-negative integer");
-        return Integer(std::string(text), 10);
-    }
-
-private:
-    // Tokens are separated by spaces or tabs; '#' starts a comment; a
-    // trailing '\r' (CRLF files) is dropped.
-    void split() {
-        tokens_.clear();
-        std::string_view text(line_);
-        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-        text = text.substr(0, text.find('#'));
-        std::size_t i = 0;
-        while (i < text.size()) {
-            if (text[i] == ' ' || text[i] == '\t') {
-                ++i;
-                continue;
-            }
-            const std::size_t start = i;
-            while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
-            tokens_.push_back(
-                {text.substr(start, i - start), clamp_int(static_cast<long long>(start) + 1)});
-        }
-        end_column_ = clamp_int(static_cast<long long>(text.size()) + 1);
-    }
-
-    std::istream& in_;
-    const std::string& name_;
-    std::string line_; // reused, so memory does not grow with the file
-    std::vector<Token> tokens_;
-    long long line_number_ = 0;
-    int end_column_ = 1;
-};
 
 // --------------------------------------------------------------- geometry --
 
@@ -391,7 +272,7 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
     return {true, "valid: " + std::string(reason) + ", " + expected.get_str() + " reflections"};
 }
 
-Reason read_reason(const Reader& in) {
+Reason read_reason(const certify::CertificateReader& in) {
     static constexpr Reason all[] = {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle,
                                      Reason::limit};
     in.expect("reason", 1, "hit, escape, absorbed, cycle or limit");
@@ -404,7 +285,7 @@ Reason read_reason(const Reader& in) {
 
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name) {
-    Reader in(certificate, certificate_name);
+    certify::CertificateReader in(certificate, certificate_name);
     PathCheck path(scene);
     Claim claim;
     const int dim = scene.dim;
@@ -460,13 +341,13 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
             break;
         case Reason::limit:
             in.advance();
-            in.expect("partial", 0, "end of line");
+            in.expect("partial", 0, in.end_of_statement());
             break;
         }
         in.advance();
-        in.expect("end", 0, "end of line");
+        in.expect("end", 0, in.end_of_statement());
         if (in.next()) in.fail(0, "end of file (nothing may follow 'end')");
-    } catch (const Incomplete&) {
+    } catch (const certify::IncompleteCertificate&) {
         return {false, "invalid: incomplete certificate (no 'end' line)"};
     }
     return judge(scene, path, claim);

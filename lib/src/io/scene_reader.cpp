@@ -270,8 +270,16 @@ std::string read_file(const std::string& path) {
     return content;
 }
 
-Scene load_scene(const std::string& path) {
-    return read_scene(read_file(path), path);
+SceneFormat resolve_scene_format(const std::string& path, SceneFormat requested) {
+    if (requested != SceneFormat::automatic) return requested;
+    const std::string extension = std::filesystem::path(path).extension().string();
+    return extension == ".json" || extension == ".JSON" ? SceneFormat::json : SceneFormat::text;
+}
+
+Scene load_scene(const std::string& path, SceneFormat format) {
+    const std::string text = read_file(path);
+    return resolve_scene_format(path, format) == SceneFormat::json ? read_scene_json(text, path)
+                                                                   : read_scene(text, path);
 }
 
 } // namespace orthoray

@@ -1,0 +1,37 @@
+// The --format option every command that reads a scene offers.
+#pragma once
+
+#include "orthoray/parse.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <map>
+#include <string>
+
+namespace orthoray::cli {
+
+inline const std::map<std::string, SceneFormat>& scene_formats() {
+    static const std::map<std::string, SceneFormat> formats{{"auto", SceneFormat::automatic},
+                                                            {"scene", SceneFormat::text},
+                                                            {"json", SceneFormat::json}};
+    return formats;
+}
+
+// Adds `--format auto|scene|json` (or another option name) storing into `format`.
+inline CLI::Option* add_scene_format_option(CLI::App* cmd, std::string& format,
+                                            const std::string& name = "--format",
+                                            const std::string& what = "the scene file") {
+    format = "auto";
+    return cmd
+        ->add_option(name, format,
+                     "format of " + what +
+                         ": auto (default: JSON when the name ends in .json, .scene text "
+                         "otherwise), scene (docs/scene-format.md) or json (docs/scene-json.md)")
+        ->check(CLI::IsMember({"auto", "scene", "json"}));
+}
+
+inline SceneFormat scene_format_named(const std::string& name) {
+    return scene_formats().at(name);
+}
+
+} // namespace orthoray::cli

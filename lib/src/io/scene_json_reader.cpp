@@ -1,0 +1,195 @@
+// The JSON scene reader (docs/scene-json.md). The JSON is parsed into a tree
+// that keeps every value's line and column; this file then reads the scene
+// out of it, and the first problem becomes the one InputError, at the value
+// (or key) at fault.
+#include "orthoray/parse.hpp"
+
+#include "io/json_document.hpp"
+
+#include <string>
+
+namespace orthoray {
+namespace {
+
+using io::JsonValue;
+
+constexpr const char* rational_forms = "a rational as a JSON string (\"3\", \"-7/2\", \"0.125\")";
+
+class SceneJsonReader {
+public:
+    explicit SceneJsonReader(const std::string& file) : file_(file) {}
+
+    Scene read(const JsonValue& root) {
+        expect_type(root, JsonValue::Type::object, "a scene object {\"dim\": ..., ...}");
+        check_keys(root, {"dim", "elements", "ray", "target"});
+        const JsonValue& dim = member(root, "dim", "the dimension 2 or 3");
+        if (dim.type != JsonValue::Type::number || (dim.text != "2" && dim.text != "3"))
+            fail(dim, "found " + io::describe(dim) + ", expected the dimension 2 or 3");
+        scene_.dim = dim.text[0] - '0';
+
+        const JsonValue& elements = member(root, "elements", "an array of mirrors and absorbers");
+        expect_type(elements, JsonValue::Type::array, "an array of mirrors and absorbers");
+        scene_.elements.reserve(elements.items.size());
+        for (const JsonValue& e : elements.items) read_element(e);
+
+        const JsonValue& ray = member(root, "ray", "{\"start\": [...], \"direction\": [...]}");
+        expect_type(ray, JsonValue::Type::object, "{\"start\": [...], \"direction\": [...]}");
+        check_keys(ray, {"start", "direction"});
+        scene_.start = point(member(ray, "start", "the start point"), "the start point");
+        const JsonValue& direction = member(ray, "direction", "the direction");
+        scene_.direction = point(direction, "the direction");
+        bool zero = true;
+        for (int j = 0; j < scene_.dim; ++j) zero = zero && scene_.direction[j] == 0;
+        if (zero) fail(direction, "found the direction 0, expected a nonzero direction");
+
+        scene_.target = point(member(root, "target", "the target point"), "the target point");
+        return std::move(scene_);
+    }
+
+private:
+    [[noreturn]] void fail(int line, int column, const std::string& message) const {
+        throw InputError(file_, line, column, message);
+    }
+    [[noreturn]] void fail(const JsonValue& at, const std::string& message) const {
+        fail(at.line, at.column, message);
+    }
+
+    void expect_type(const JsonValue& value, JsonValue::Type type,
+                     const std::string& expected) const {
+        if (value.type != type)
+            fail(value, "found " + io::describe(value) + ", expected " + expected);
+    }
+
+    // Unknown and repeated keys are errors: a misspelt key would otherwise
+    // silently change the scene.
+    void check_keys(const JsonValue& object,
+                    std::initializer_list<std::string_view> allowed) const {
+        std::string names;
+        for (std::string_view name : allowed)
+            names += (names.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+        for (std::size_t i = 0; i < object.keys.size(); ++i) {
+            const std::string& key = object.keys[i];
+            bool known = false;
+            for (std::string_view name : allowed) known = known || key == name;
+            if (!known)
+                fail(object.key_lines[i], object.key_columns[i],
+                     "found the key " + io::json_quoted(key) + ", expected one of " + names);
+            for (std::size_t k = 0; k < i; ++k)
+                if (object.keys[k] == key)
+                    fail(object.key_lines[i], object.key_columns[i],
+                         "found a second key " + io::json_quoted(key) + " (the first is on line " +
+                             std::to_string(object.key_lines[k]) + "), expected each key once");
+        }
+    }
+
+    const JsonValue& member(const JsonValue& object, std::string_view key,
+                            const std::string& what) const {
+        const JsonValue* value = object.find(key);
+        if (!value)
+            fail(object, "found an object without \"" + std::string(key) + "\", expected \"" +
+                             std::string(key) + "\": " + what);
+        return *value;
+    }
+
+    Rational number(const JsonValue& value, const std::string& what) const {
+        if (value.type != JsonValue::Type::string)
+            fail(value,
+                 "found " + io::describe(value) + ", expected " + what + ": " + rational_forms);
+        NumberToken n = read_number(value.text);
+        if (n.status == NumberToken::Status::zero_denominator)
+            fail(value, "found " + io::describe(value) + ", expected " + what +
+                            " with a nonzero denominator");
+        if (n.status != NumberToken::Status::ok)
+            fail(value,
+                 "found " + io::describe(value) + ", expected " + what + ": " + rational_forms);
+        n.value.canonicalize();
+        return n.value;
+    }
+
+    // An array of `dim` rationals.
+    Vector point(const JsonValue& value, const std::string& what) const {
+        const std::string expected = "an array of " + std::to_string(scene_.dim) + " rationals";
+        expect_type(value, JsonValue::Type::array, what + " as " + expected);
+        if (value.items.size() != static_cast<std::size_t>(scene_.dim))
+            fail(value, "found an array of " + std::to_string(value.items.size()) +
+                            " values, expected " + what + " as " + expected);
+        Vector result;
+        for (int j = 0; j < scene_.dim; ++j)
+            result[j] = number(value.items[j], what + std::string(" (") + axis_name(j) + ")");
+        return result;
+    }
+
+    int axis_of(const JsonValue& value) const {
+        const std::string letters = scene_.dim == 2 ? "\"x\" or \"y\"" : "\"x\", \"y\" or \"z\"";
+        if (value.type == JsonValue::Type::string && value.text.size() == 1 &&
+            value.text[0] >= 'x' && value.text[0] < 'x' + scene_.dim)
+            return value.text[0] - 'x';
+        fail(value, "found " + io::describe(value) + ", expected the normal axis " + letters +
+                        " of a " + std::to_string(scene_.dim) + "D scene");
+    }
+
+    void read_element(const JsonValue& value) {
+        expect_type(value, JsonValue::Type::object,
+                    "an element {\"kind\": ..., \"axis\": ..., \"offset\": ..., \"extent\": ...}");
+        check_keys(value, {"kind", "axis", "offset", "extent"});
+        Element e;
+        e.line = value.line;
+        const JsonValue& kind = member(value, "kind", "\"mirror\" or \"absorber\"");
+        if (kind.type == JsonValue::Type::string && kind.text == "mirror")
+            e.kind = ElementKind::mirror;
+        else if (kind.type == JsonValue::Type::string && kind.text == "absorber")
+            e.kind = ElementKind::absorber;
+        else
+            fail(kind, "found " + io::describe(kind) + ", expected \"mirror\" or \"absorber\"");
+        e.axis = axis_of(member(value, "axis", "the normal axis"));
+        const std::string normal(1, axis_name(e.axis));
+        e.lo[e.axis] = e.hi[e.axis] =
+            number(member(value, "offset", "the offset " + normal + " = c"),
+                   "the offset " + normal + " = c");
+
+        const JsonValue& extent = member(value, "extent", "the other axes' [lo, hi]");
+        const std::string extent_form = scene_.dim == 2
+                                            ? "an object like {\"y\": [\"0\", \"5\"]}"
+                                            : "an object like {\"x\": [\"0\", \"4\"], \"y\": "
+                                              "[\"0\", \"4\"]}";
+        expect_type(extent, JsonValue::Type::object, extent_form);
+        std::string other_axes[2];
+        std::size_t count = 0;
+        for (int j = 0; j < scene_.dim; ++j)
+            if (j != e.axis) other_axes[count++] = std::string(1, axis_name(j));
+        if (scene_.dim == 2)
+            check_keys(extent, {other_axes[0]});
+        else
+            check_keys(extent, {other_axes[0], other_axes[1]});
+        for (int j = 0; j < scene_.dim; ++j) {
+            if (j == e.axis) continue;
+            const std::string name(1, axis_name(j));
+            const JsonValue& range = member(extent, name, "the " + name + " extent as [lo, hi]");
+            if (range.type != JsonValue::Type::array || range.items.size() != 2)
+                fail(range, "found " + io::describe(range) +
+                                (range.type == JsonValue::Type::array
+                                     ? " of " + std::to_string(range.items.size()) + " values"
+                                     : "") +
+                                ", expected the " + name + " extent as [lo, hi]");
+            e.lo[j] = number(range.items[0], "the lower end of the " + name + " extent");
+            e.hi[j] = number(range.items[1], "the upper end of the " + name + " extent");
+            if (!(e.lo[j] < e.hi[j]))
+                fail(range.items[1],
+                     "found " + io::describe(range.items[1]) + " as the upper end of the " + name +
+                         " extent, expected a number greater than " + to_string(e.lo[j]));
+        }
+        scene_.elements.push_back(std::move(e));
+    }
+
+    const std::string& file_;
+    Scene scene_;
+};
+
+} // namespace
+
+Scene read_scene_json(std::string_view text, const std::string& file) {
+    const io::JsonValue root = io::parse_json(text, file);
+    return SceneJsonReader(file).read(root);
+}
+
+} // namespace orthoray

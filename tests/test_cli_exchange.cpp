@@ -1,0 +1,255 @@
+// The command line for exchange and pictures: convert both ways on every
+// instance, solve/verify/pieces on JSON scenes, malformed JSON as exit 2
+// with one FILE:LINE:COL line, JSON Lines certificates verified and
+// tampered ones rejected, and render writing SVG and PNG.
+#include "support/run_cli.hpp"
+#include "support/xml_check.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using orthoray::test::CliResult;
+using orthoray::test::run_cli;
+using orthoray::test::source_path;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+public:
+    TempDir() {
+        static int counter = 0;
+        path_ =
+            fs::temp_directory_path() / ("orthoray-test-exchange-" + std::to_string(::getpid()) +
+                                         "-" + std::to_string(counter++));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    std::string path(const std::string& name) const { return (path_ / name).string(); }
+    std::string write(const std::string& name, const std::string& content) const {
+        std::ofstream(path(name), std::ios::binary) << content;
+        return path(name);
+    }
+
+private:
+    fs::path path_;
+};
+
+std::string quote(const std::string& s) {
+    return "'" + s + "'";
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string instance(const std::string& name) {
+    return source_path("instances/" + name);
+}
+
+void require_bad_input(const CliResult& r) {
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+// The first line of `solve` (answer ...) and its exit status.
+std::string answer_of(const CliResult& r) {
+    return std::to_string(r.status) + " " + r.out.substr(0, r.out.find('\n'));
+}
+
+std::vector<std::string> instance_names() {
+    const fs::path root = source_path("instances");
+    std::vector<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(root))
+        if (entry.is_regular_file() && entry.path().extension() == ".scene")
+            names.push_back(fs::relative(entry.path(), root).generic_string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+} // namespace
+
+TEST_CASE("convert round-trips every instance and solve agrees on both formats", "[cli][json]") {
+    TempDir dir;
+    for (const std::string& name : instance_names()) {
+        INFO(name);
+        const std::string json = dir.path("s.json"), back = dir.path("back.scene"),
+                          again = dir.path("again.scene");
+        const CliResult to_json = run_cli("convert " + quote(instance(name)) + " " + quote(json));
+        REQUIRE(to_json.status == 0);
+        CHECK(to_json.out.empty());
+        REQUIRE(run_cli("convert " + quote(json) + " " + quote(back)).status == 0);
+        // .scene -> .scene is the canonical text; through JSON it is the same.
+        REQUIRE(run_cli("convert " + quote(instance(name)) + " " + quote(again)).status == 0);
+        CHECK(slurp(back) == slurp(again));
+        CHECK(answer_of(run_cli("solve " + quote(json))) ==
+              answer_of(run_cli("solve " + quote(instance(name)))));
+        const CliResult bounds_json = run_cli("bounds --json " + quote(json));
+        CHECK(bounds_json.status == 0);
+        CHECK(bounds_json.out == run_cli("bounds --json " + quote(instance(name))).out);
+    }
+}
+
+TEST_CASE("the format option overrides the extension", "[cli][json]") {
+    TempDir dir;
+    const std::string json = dir.path("box.json");
+    REQUIRE(run_cli("convert " + quote(instance("2d/box-corner-3x5.scene")) + " " + quote(json))
+                .status == 0);
+    const std::string txt = dir.write("box.txt", slurp(json));
+    CHECK(run_cli("solve --format json " + quote(txt)).status == 0);
+    CHECK(run_cli("pieces --format json " + quote(txt)).status == 0);
+    CHECK(run_cli("bounds --format json " + quote(txt)).status == 0);
+    const CliResult as_text = run_cli("solve " + quote(txt));
+    require_bad_input(as_text);
+    CHECK(as_text.err.rfind(txt + ":1:1: found '{'", 0) == 0);
+    require_bad_input(run_cli("solve --format yaml " + quote(txt)));
+    // convert --to picks the output format whatever the name
+    const std::string out = dir.path("out.txt");
+    REQUIRE(run_cli("convert --to json " + quote(instance("2d/box-corner-3x5.scene")) + " " +
+                    quote(out))
+                .status == 0);
+    CHECK(slurp(out) == slurp(json));
+}
+
+TEST_CASE("malformed JSON scenes exit 2 with one FILE:LINE:COL line", "[cli][json][errors]") {
+    TempDir dir;
+    const std::string bad = dir.write("bad.json", "{\n  \"dim\": 2,\n  \"elements\": [}\n");
+    for (const char* command : {"solve", "verify", "pieces", "render", "convert"}) {
+        INFO(command);
+        std::string args = std::string(command) + " " + quote(bad);
+        if (std::string(command) == "verify") args += " " + quote(bad);
+        if (std::string(command) == "convert") args += " " + quote(dir.path("x.scene"));
+        if (std::string(command) == "render") args += " -o " + quote(dir.path("x.svg"));
+        const CliResult r = run_cli(args);
+        require_bad_input(r);
+        CHECK(r.err == bad + ":3:16: found '}', expected '[', '{', or a literal\n");
+    }
+    CHECK_FALSE(fs::exists(dir.path("x.scene")));
+    CHECK_FALSE(fs::exists(dir.path("x.svg")));
+    const std::string not_scene = dir.write("n.json", "{\"dim\": 2, \"elements\": 3}");
+    const CliResult r = run_cli("solve " + quote(not_scene));
+    require_bad_input(r);
+    CHECK(r.err == not_scene + ":1:24: found the number 3, expected an array of mirrors and "
+                               "absorbers\n");
+}
+
+TEST_CASE("JSON Lines certificates verify, and tampered ones do not", "[cli][jsonl]") {
+    TempDir dir;
+    const std::string scene = instance("2d/unit-square-slope-2-3.scene");
+    const std::string cert = dir.path("c.jsonl");
+    const CliResult solved = run_cli("solve " + quote(scene) + " --certificate " + quote(cert) +
+                                     " --certificate-format jsonl");
+    CHECK(solved.status == 1);
+    const CliResult ok = run_cli("verify " + quote(scene) + " " + quote(cert));
+    CHECK(ok.status == 0);
+    CHECK(ok.out == "valid: cycle, 10 reflections\n");
+
+    std::string text = slurp(cert);
+    const std::size_t period = text.find("\"period\": \"10\"");
+    REQUIRE(period != std::string::npos);
+    const std::string tampered =
+        dir.write("t.jsonl", std::string(text).replace(period, 14, "\"period\": \"5\""));
+    const CliResult rejected = run_cli("verify " + quote(scene) + " " + quote(tampered));
+    CHECK(rejected.status == 1);
+    CHECK(rejected.out.rfind("invalid: verdict: period 5", 0) == 0);
+
+    const std::string broken = dir.write("b.jsonl", text.substr(0, 40) + "\n");
+    const CliResult malformed = run_cli("verify " + quote(scene) + " " + quote(broken));
+    require_bad_input(malformed);
+    CHECK(malformed.err.rfind(broken + ":2:", 0) == 0);
+
+    require_bad_input(run_cli("solve " + quote(scene) + " --certificate " + quote(cert) +
+                              " --certificate-format xml"));
+    // A format without a file to write is a usage error, not silently ignored.
+    const CliResult no_file = run_cli("solve " + quote(scene) + " --certificate-format jsonl");
+    require_bad_input(no_file);
+    CHECK(no_file.err.find("--certificate") != std::string::npos);
+}
+
+TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli][render]") {
+    TempDir dir;
+    const std::string scene = instance("2d/box-corner-3x5.scene");
+    const std::string svg = dir.path("box.svg");
+    const CliResult r = run_cli("render " + quote(scene) + " -o " + quote(svg));
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    CHECK(r.out == "wrote " + svg + " (6 segments)\n");
+    const auto doc = orthoray::test::read_xml(slurp(svg));
+    INFO(doc.error);
+    CHECK(doc.well_formed);
+    CHECK(slurp(svg).find("answer yes, reason hit, 6 reflections") != std::string::npos);
+
+    for (const char* format : {"text", "jsonl"}) {
+        INFO(format);
+        const std::string cert = dir.path(std::string("c.") + format);
+        REQUIRE(run_cli("solve " + quote(scene) + " --certificate " + quote(cert) +
+                        " --certificate-format " + format)
+                    .status == 0);
+        const std::string from_cert = dir.path("cert.svg");
+        const CliResult c = run_cli("render " + quote(scene) + " --certificate " + quote(cert) +
+                                    " -o " + quote(from_cert));
+        CHECK(c.status == 0);
+        const std::string picture = slurp(from_cert);
+        CHECK(orthoray::test::read_xml(picture).well_formed);
+        CHECK(picture.find("(claimed by c.") != std::string::npos);
+        const CliResult two = run_cli("render " + quote(scene) + " --certificate " + quote(cert) +
+                                      " --steps 2 -o " + quote(from_cert));
+        CHECK(two.out == "wrote " + from_cert + " (2 segments)\n");
+    }
+
+    const std::string bad_cert = dir.write("bad.cert", "orthoray-certificate 1\ndim 3\n");
+    const std::string not_written = dir.path("never.svg");
+    const CliResult bad = run_cli("render " + quote(scene) + " --certificate " + quote(bad_cert) +
+                                  " -o " + quote(not_written));
+    require_bad_input(bad);
+    CHECK(bad.err == bad_cert + ":2:5: found '3', expected '2' (the scene's dim)\n");
+    CHECK_FALSE(fs::exists(not_written));
+    require_bad_input(run_cli("render " + quote(scene) + " --steps 0 -o " + quote(not_written)));
+}
+
+TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render]") {
+    TempDir dir;
+    const std::string png = dir.path("cube.png");
+    const CliResult r = run_cli("render " + quote(instance("3d/corner-cube-retroreflector.scene")) +
+                                " -o " + quote(png));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string bytes = slurp(png);
+    REQUIRE(bytes.size() > 1000);
+    CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+}
+
+TEST_CASE("render and convert explain themselves with an example", "[cli]") {
+    for (const char* args : {"render --help", "convert --help"}) {
+        INFO("orthoray " << args);
+        const CliResult r = run_cli(args);
+        CHECK(r.status == 0);
+        CHECK(r.out.find("Example:") != std::string::npos);
+        const bool names_format = r.out.find("--format") != std::string::npos ||
+                                  r.out.find("--from") != std::string::npos;
+        CHECK(names_format);
+    }
+    const CliResult top = run_cli("--help");
+    CHECK(top.out.find("render") != std::string::npos);
+    CHECK(top.out.find("convert") != std::string::npos);
+}

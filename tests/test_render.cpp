@@ -1,0 +1,234 @@
+// Pictures: the SVG is well-formed XML with the expected views, elements,
+// markers and caption; the drawn path has the segments the answer implies;
+// long paths are thinned to a bounded file and the caption says so; the
+// path from a certificate (either format) is the path from the solver; tick
+// labels are exact.
+#include "orthoray/certificate.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/render.hpp"
+#include "orthoray/solve.hpp"
+#include "render/axis_ticks.hpp"
+#include "support/xml_check.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using orthoray::PathEnd;
+using orthoray::Reason;
+using orthoray::RenderOptions;
+using orthoray::Scene;
+using orthoray::SceneRenderer;
+using orthoray::test::read_xml;
+using orthoray::test::XmlDocument;
+using orthoray::test::XmlElement;
+
+namespace {
+
+Scene instance(const std::string& name) {
+    return orthoray::load_scene(std::string(ORTHORAY_SOURCE_DIR) + "/instances/" + name);
+}
+
+// Records the last direction the solver streams, for the escape ray.
+class LastDirection : public orthoray::PathSink {
+public:
+    explicit LastDirection(PathSink& next) : next_(next) {}
+    void visit(const orthoray::Vector& p, const orthoray::Vector& v) override {
+        direction = v;
+        next_.visit(p, v);
+    }
+    orthoray::Vector direction;
+
+private:
+    PathSink& next_;
+};
+
+struct Picture {
+    std::string svg;
+    XmlDocument xml;
+    orthoray::Answer answer;
+};
+
+Picture draw(const Scene& scene, std::uint64_t max_steps = 1000, RenderOptions options = {}) {
+    SceneRenderer renderer(scene, options);
+    LastDirection tap(renderer);
+    orthoray::SolveOptions solve_options;
+    solve_options.max_steps = max_steps;
+    solve_options.path = &tap;
+    Picture p;
+    p.answer = orthoray::solve(scene, solve_options);
+    renderer.add_caption(std::string("answer ") + orthoray::answer_word(p.answer));
+    renderer.finish({p.answer.reason, tap.direction});
+    std::ostringstream out;
+    renderer.write_svg(out);
+    p.svg = out.str();
+    p.xml = read_xml(p.svg);
+    return p;
+}
+
+std::vector<const XmlElement*> with_class(const XmlDocument& doc, const std::string& name,
+                                          const std::string& cls) {
+    std::vector<const XmlElement*> found;
+    for (const XmlElement& e : doc.elements) {
+        const auto it = e.attributes.find("class");
+        if (e.name == name && it != e.attributes.end() && it->second == cls) found.push_back(&e);
+    }
+    return found;
+}
+
+std::size_t count_char(const std::string& text, char c) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), c));
+}
+
+std::string caption(const XmlDocument& doc) {
+    std::string all;
+    for (const XmlElement* e : with_class(doc, "text", "caption")) all += e->text + "\n";
+    return all;
+}
+
+} // namespace
+
+TEST_CASE("the XML checker itself rejects broken documents", "[render]") {
+    CHECK(read_xml("<a><b x=\"1\"/>t</a>").well_formed);
+    CHECK_FALSE(read_xml("<a><b></a></b>").well_formed);
+    CHECK_FALSE(read_xml("<a x=1/>").well_formed);
+    CHECK_FALSE(read_xml("<a>&nbsp;</a>").well_formed);
+    CHECK_FALSE(read_xml("<a>").well_formed);
+    CHECK_FALSE(read_xml("<a/><b/>").well_formed);
+}
+
+TEST_CASE("a 2D picture has the mirrors, markers, caption and the whole path", "[render]") {
+    const Picture p = draw(instance("2d/box-corner-3x5.scene"));
+    INFO(p.xml.error);
+    REQUIRE(p.xml.well_formed);
+    CHECK(p.xml.elements.front().name == "svg");
+    CHECK(with_class(p.xml, "g", "view").size() == 1);
+    const auto mirrors = with_class(p.xml, "path", "mirror");
+    REQUIRE(mirrors.size() == 1);
+    CHECK(count_char(mirrors[0]->attributes.at("d"), 'M') == 4); // four mirrors
+    CHECK(with_class(p.xml, "path", "absorber").empty());
+    const auto path = with_class(p.xml, "path", "trajectory");
+    REQUIRE(path.size() == 1);
+    // 6 reflections: 6 segments between the 7 points, then on to the target.
+    CHECK(count_char(path[0]->attributes.at("d"), 'L') == 7);
+    CHECK(count_char(path[0]->attributes.at("d"), 'M') == 1);
+    CHECK(with_class(p.xml, "circle", "start").size() == 1);
+    CHECK(with_class(p.xml, "path", "start-arrow").size() == 1);
+    CHECK(with_class(p.xml, "path", "target").size() == 1);
+    CHECK(caption(p.xml) == "answer yes\n");
+    // Tick labels in scene coordinates: 0..3 across, 0..5 up.
+    std::vector<std::string> ticks;
+    for (const XmlElement* e : with_class(p.xml, "text", "tick")) ticks.push_back(e->text);
+    CHECK(ticks == std::vector<std::string>{"0", "1", "2", "3", "0", "1", "2", "3", "4", "5"});
+}
+
+TEST_CASE("an escape is drawn out to the frame and an absorption is marked", "[render]") {
+    const Picture escape = draw(instance("2d/escape-after-three-reflections.scene"));
+    REQUIRE(escape.xml.well_formed);
+    REQUIRE(escape.answer.reason == Reason::escape);
+    const auto path = with_class(escape.xml, "path", "trajectory");
+    REQUIRE(path.size() == 1);
+    CHECK(count_char(path[0]->attributes.at("d"), 'L') == 4); // 3 segments + the final ray
+
+    const Picture absorbed = draw(instance("2d/absorbed-after-three-reflections.scene"));
+    REQUIRE(absorbed.xml.well_formed);
+    CHECK(with_class(absorbed.xml, "path", "absorber").size() == 1);
+    CHECK(with_class(absorbed.xml, "rect", "absorbed").size() == 1);
+}
+
+TEST_CASE("a 3D picture has three projections and an oblique view", "[render]") {
+    const Picture p = draw(instance("3d/corner-cube-retroreflector.scene"));
+    INFO(p.xml.error);
+    REQUIRE(p.xml.well_formed);
+    std::vector<std::string> names;
+    for (const XmlElement* e : with_class(p.xml, "g", "view"))
+        names.push_back(e->attributes.at("data-name"));
+    CHECK(names == std::vector<std::string>{"xy (top)", "xz (front)", "yz (side)", "oblique"});
+    // Each mirror is seen face-on in one projection and in the oblique view.
+    const auto faces = with_class(p.xml, "path", "face-mirror");
+    std::size_t face_count = 0;
+    for (const XmlElement* f : faces) face_count += count_char(f->attributes.at("d"), 'Z');
+    CHECK(face_count == 3 + 3);
+    CHECK(with_class(p.xml, "path", "trajectory").size() == 4);
+    CHECK(with_class(p.xml, "path", "target").size() == 4);
+}
+
+TEST_CASE("a long periodic path is thinned to a small file and the caption says so", "[render]") {
+    // A 997 x 1000 box: the 45-degree ray covers it in ~2000 reflections a period.
+    Scene scene = orthoray::read_scene("dim 2\nmirror x 0 y 0 1000\nmirror x 997 y 0 1000\n"
+                                       "mirror y 0 x 0 997\nmirror y 1000 x 0 997\n"
+                                       "ray 0 0 1 1\ntarget 500 -1\n");
+    const Picture p = draw(scene, 200'000);
+    REQUIRE(p.xml.well_formed);
+    REQUIRE(p.answer.reason == Reason::cycle);
+    CHECK(caption(p.xml).find("thinned: ") != std::string::npos);
+    CHECK(p.svg.size() < 200'000);
+
+    RenderOptions tiny;
+    tiny.max_path_vertices = 100;
+    const Picture cut = draw(scene, 200'000, tiny);
+    REQUIRE(cut.xml.well_formed);
+    CHECK(caption(cut.xml).find("cut at the 100-vertex cap") != std::string::npos);
+    const auto path = with_class(cut.xml, "path", "trajectory");
+    REQUIRE(path.size() == 1);
+    const std::string& d = path[0]->attributes.at("d");
+    CHECK(count_char(d, 'L') + count_char(d, 'M') <= 100);
+}
+
+TEST_CASE("a certificate's path draws like the solver's, in both formats", "[render]") {
+    for (const char* name : {"2d/box-corner-3x5.scene", "3d/box-corner-2x3x5.scene",
+                             "2d/escape-after-three-reflections.scene"}) {
+        INFO(name);
+        const Scene scene = instance(name);
+        const Picture solved = draw(scene);
+        for (auto format :
+             {orthoray::CertificateFormat::text, orthoray::CertificateFormat::jsonl}) {
+            std::stringstream cert;
+            orthoray::CertificateWriter writer(cert, scene, format);
+            orthoray::SolveOptions options;
+            options.path = &writer;
+            writer.finish(orthoray::solve(scene, options));
+
+            SceneRenderer renderer(scene);
+            const orthoray::CertificateClaim claim =
+                orthoray::read_certificate_path(scene, cert, "c", renderer);
+            CHECK(claim.complete);
+            CHECK(claim.reason == solved.answer.reason);
+            CHECK(claim.reflections == solved.answer.reflections);
+            renderer.add_caption("answer " + claim.answer);
+            renderer.finish({claim.reason, claim.direction});
+            std::ostringstream out;
+            renderer.write_svg(out);
+            CHECK(out.str() == solved.svg);
+        }
+    }
+}
+
+TEST_CASE("tick values are exact round numbers", "[render]") {
+    using orthoray::Rational;
+    auto labels = [](const Rational& lo, const Rational& hi, int count) {
+        std::vector<std::string> result;
+        for (const auto& t : orthoray::render::axis_ticks(lo, hi, count)) result.push_back(t.label);
+        return result;
+    };
+    CHECK(labels(0, 5, 5) == std::vector<std::string>{"0", "1", "2", "3", "4", "5"});
+    CHECK(labels(Rational(-1, 3), Rational(1, 3), 4) ==
+          std::vector<std::string>{"-0.2", "0", "0.2"});
+    CHECK(labels(Rational(1, 1000), Rational(3, 1000), 2) ==
+          std::vector<std::string>{"0.001", "0.002", "0.003"});
+    CHECK(labels(Rational(1'000'000), Rational(1'000'003), 3) ==
+          std::vector<std::string>{"1000000", "1000001", "1000002", "1000003"});
+    const auto ticks = orthoray::render::axis_ticks(Rational(-7, 2), Rational(7, 2), 4);
+    REQUIRE_FALSE(ticks.empty());
+    CHECK(ticks.front().label == "-2");
+    CHECK(ticks.front().fraction == Approx(1.5 / 7));
+    // A span no double can hold still gets round, exact ticks.
+    const orthoray::Rational huge(orthoray::Integer("1" + std::string(400, '0')));
+    const auto far = orthoray::render::axis_ticks(0, huge, 4);
+    REQUIRE(far.size() >= 3);
+    CHECK(far[1].fraction == Approx(far.back().fraction / static_cast<double>(far.size() - 1)));
+    CHECK(far[1].label == "5e399");
+}
