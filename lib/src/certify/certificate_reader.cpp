@@ -213,4 +213,15 @@ Integer CertificateReader::count(std::size_t index) const {
     return Integer(text, 10);
 }
 
+void CertificateReader::read_header(int dim) {
+    const std::string dim_text = std::to_string(dim);
+    advance();
+    expect("orthoray-certificate", 1, "the format version 1");
+    if (token(1) != "1") fail(1, "the format version 1");
+    advance();
+    expect("dim", 1, "'" + dim_text + "'");
+    if (token(1) != dim_text) fail(1, "'" + dim_text + "' (the scene's dim)");
+    advance();
+}
+
 } // namespace orthoray::certify

@@ -45,6 +45,10 @@ public:
     // each described by `operand` in the error when it is missing.
     void expect(std::string_view keyword, std::size_t operands, const std::string& operand) const;
 
+    // Reads the two header statements, `orthoray-certificate 1` and
+    // `dim D` with D the scene's dimension, and moves past them.
+    void read_header(int dim);
+
     // What a statement ends with, as error messages say it.
     const char* end_of_statement() const;
 

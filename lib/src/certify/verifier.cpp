@@ -289,16 +289,8 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
     PathCheck path(scene);
     Claim claim;
     const int dim = scene.dim;
-    const std::string dim_text = std::to_string(dim);
     try {
-        in.advance();
-        in.expect("orthoray-certificate", 1, "the format version 1");
-        if (in.token(1) != "1") in.fail(1, "the format version 1");
-        in.advance();
-        in.expect("dim", 1, "'" + dim_text + "'");
-        if (in.token(1) != dim_text) in.fail(1, "'" + dim_text + "' (the scene's dim)");
-
-        in.advance();
+        in.read_header(dim);
         while (in.keyword() == "point") {
             in.expect("point", dim, "a number");
             path.point(in.vector(1, dim));
