@@ -80,8 +80,8 @@ private:
     // copied in, so that members met behind p or beyond the best hit so far
     // are rejected without loading the element.
     struct Member {
-        Int key;    // smallest depth at which a line of the cell can meet the element
-        Int offset; // the element's plane: x_axis = offset
+        Int key;   // smallest depth at which a line of the cell can meet the element
+        Int plane; // the element's plane x_axis = c, as sigma_axis * c
         std::uint32_t item;
         std::uint8_t axis;
     };
@@ -92,6 +92,7 @@ private:
         unsigned shift[M]{};                // cell side on axis j is 2^shift[j]
         std::int64_t cells[M]{};            // cells on axis j
         Int reach{};                        // largest cell side minus one
+        Int far{};                          // larger than every element's depth
         std::vector<std::uint32_t> offsets; // CSR: cell -> members, sorted by key
         std::vector<Member> members;
     };
@@ -227,6 +228,11 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
             ++i[j];
         }
     };
+    for (const Item& it : items_) {
+        const Int d = s0 * it.lo[0] < s0 * it.hi[0] ? Int(s0 * it.hi[0]) : Int(s0 * it.lo[0]);
+        if (bundle.far < d) bundle.far = d;
+    }
+    bundle.far += 1;
     bundle.offsets.assign(static_cast<std::size_t>(total) + 1, 0);
     for (std::uint32_t e = 0; e < items_.size(); ++e)
         for_each_cell(e, [&](std::int64_t c, const Int&) { ++bundle.offsets[c + 1]; });
@@ -237,7 +243,8 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
     for (std::uint32_t e = 0; e < items_.size(); ++e)
         for_each_cell(e, [&](std::int64_t c, const Int& key) {
             bundle.members[fill[c]++] =
-                Member{key, items_[e].lo[items_[e].axis], e, items_[e].axis};
+                Member{key, Int(sigma(negative, items_[e].axis) * items_[e].lo[items_[e].axis]), e,
+                       items_[e].axis};
         });
     for (std::size_t c = 0; c + 1 < bundle.offsets.size(); ++c)
         std::sort(bundle.members.begin() + bundle.offsets[c],
@@ -274,13 +281,20 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
         first = std::upper_bound(first, last, behind,
                                  [](const Int& x, const Member& m) { return x < m.key; });
     }
-    for (; first != last; ++first) {
-        if (!shot.escape && depth + shot.t < first->key) break;
+    // t = sigma_a (c - p_a) = plane - sigma_a p_a.
+    Int sp[M];
+    for (int j = 0; j < M; ++j) sp[j] = s[j] * p[j];
+    // The best hit's depth; until one is found, past every member's depth.
+    Int best = bundle.far;
+    for (; first != last && !(best < first->key); ++first) {
         const int a = first->axis;
-        const Int t = s[a] * Int(first->offset - p[a]);
-        if (t <= 0 || (!shot.escape && shot.t < t)) continue;
+        const Int t = first->plane - sp[a];
+        if (t <= 0 || best < Int(depth + t)) continue;
         const Item& it = items_[first->item];
-        if (it.holds(p, s, t)) shot.record(t, a, it.absorber, it.index);
+        if (it.holds(p, s, t)) {
+            shot.record(t, a, it.absorber, it.index);
+            best = depth + shot.t;
+        }
     }
     return shot;
 }
