@@ -6,6 +6,8 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
 
+#include "support/test_files.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -21,15 +23,7 @@ using orthoray::Scene;
 
 namespace {
 
-std::vector<std::filesystem::path> instance_files() {
-    const std::filesystem::path root = std::filesystem::path(ORTHORAY_SOURCE_DIR) / "instances";
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
-        if (entry.is_regular_file() && entry.path().extension() == ".scene")
-            files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+using orthoray::test::instance_files;
 
 std::string certify(const Scene& scene, CertificateFormat format,
                     orthoray::SolveOptions options = {}) {

@@ -2,6 +2,7 @@
 // errors on stderr and nothing on stdout for bad input, the JSON and text
 // answers, certificates and their verification, and the help texts.
 #include "support/run_cli.hpp"
+#include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -12,61 +13,13 @@
 #include <random>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
-using orthoray::test::CliResult;
-using orthoray::test::run_cli;
-using orthoray::test::source_path;
+using namespace orthoray::test;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// A fresh directory for the files one test case writes; removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        static int counter = 0;
-        path_ = fs::temp_directory_path() / ("orthoray-test-cli-" + std::to_string(::getpid()) +
-                                             "-" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    std::string path(const std::string& name) const { return (path_ / name).string(); }
-
-    // Writes `content` byte for byte and returns the file's path.
-    std::string write(const std::string& name, const std::string& content) const {
-        std::ofstream out(path(name), std::ios::binary);
-        out << content;
-        return path(name);
-    }
-
-private:
-    fs::path path_;
-};
-
-std::string quote(const std::string& s) {
-    return "'" + s + "'";
-}
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::string instance(const std::string& name) {
-    return source_path("instances/" + name);
-}
 
 const std::string box_corner = "2d/box-corner-3x5.scene";         // yes, hit, 6
 const std::string unit_square = "2d/unit-square-slope-2-3.scene"; // no, cycle, period 10

@@ -3,6 +3,7 @@
 // with one FILE:LINE:COL line, JSON Lines certificates verified and
 // tampered ones rejected, and render writing SVG and PNG.
 #include "support/run_cli.hpp"
+#include "support/test_files.hpp"
 #include "support/xml_check.hpp"
 
 #include <catch2/catch.hpp>
@@ -12,58 +13,13 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
-using orthoray::test::CliResult;
-using orthoray::test::run_cli;
-using orthoray::test::source_path;
+using namespace orthoray::test;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
-public:
-    TempDir() {
-        static int counter = 0;
-        path_ =
-            fs::temp_directory_path() / ("orthoray-test-exchange-" + std::to_string(::getpid()) +
-                                         "-" + std::to_string(counter++));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    std::string path(const std::string& name) const { return (path_ / name).string(); }
-    std::string write(const std::string& name, const std::string& content) const {
-        std::ofstream(path(name), std::ios::binary) << content;
-        return path(name);
-    }
-
-private:
-    fs::path path_;
-};
-
-std::string quote(const std::string& s) {
-    return "'" + s + "'";
-}
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::string instance(const std::string& name) {
-    return source_path("instances/" + name);
-}
 
 void require_bad_input(const CliResult& r) {
     INFO("stdout: " << r.out << "\nstderr: " << r.err);

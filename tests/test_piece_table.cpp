@@ -102,7 +102,8 @@ TEST_CASE("piece tables merge runs into few pieces", "[pieces]") {
     std::ostringstream dump;
     table->dump(dump);
     CHECK(dump.str().find("element 0 +x+y from 0: element 0 at t = 0") == std::string::npos);
-    CHECK(dump.str().find("element 0 +x+y from 0: element 1 at t = 4, flip x") != std::string::npos);
+    CHECK(dump.str().find("element 0 +x+y from 0: element 1 at t = 4, flip x") !=
+          std::string::npos);
 }
 
 TEST_CASE("piece tables refuse beyond their budget", "[pieces]") {

@@ -6,6 +6,8 @@
 #include "orthoray/scene.hpp"
 #include "support/random_scene.hpp"
 
+#include "support/test_files.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -26,15 +28,7 @@ using orthoray::write_scene_json;
 
 namespace {
 
-std::vector<std::filesystem::path> instance_files() {
-    const std::filesystem::path root = std::filesystem::path(ORTHORAY_SOURCE_DIR) / "instances";
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
-        if (entry.is_regular_file() && entry.path().extension() == ".scene")
-            files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+using orthoray::test::instance_files;
 
 // Two scenes are the same when they write the same canonical .scene text:
 // write_scene covers every field but the declaring line numbers.
