@@ -608,9 +608,9 @@ int billion(const Options& o) {
 
 // Records the points of the exact trajectory with indices first .. last
 // (0 is the start, i the i-th reflection point).
-class PathRecorder : public PathSink {
+class PathWindow : public PathSink {
 public:
-    PathRecorder(std::uint64_t first, std::uint64_t last) : first_(first), last_(last) {}
+    PathWindow(std::uint64_t first, std::uint64_t last) : first_(first), last_(last) {}
     std::vector<Vector> points;
     void visit(const Vector& p, const Vector&) override {
         if (index_ >= first_ && index_ <= last_) points.push_back(p);
@@ -687,7 +687,7 @@ Scene disagreement_scene(const Family& family, std::uint64_t index) {
         return scene;
     }
     const std::uint64_t k = static_cast<std::uint64_t>(uniform(rng, 1, family.path_steps));
-    PathRecorder path(k - 1, k);
+    PathWindow path(k - 1, k);
     SolveOptions options;
     options.max_steps = k;
     options.path = &path;

@@ -22,15 +22,6 @@ Rational coordinate(std::mt19937_64& rng, const RandomSceneShape& s) {
     return x;
 }
 
-class PathRecorder : public PathSink {
-public:
-    std::vector<Vector> points, directions;
-    void visit(const Vector& p, const Vector& v) override {
-        points.push_back(p);
-        directions.push_back(v);
-    }
-};
-
 } // namespace
 
 Vector random_point(std::mt19937_64& rng, const RandomSceneShape& shape) {

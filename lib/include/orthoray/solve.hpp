@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace orthoray {
 
@@ -48,6 +49,17 @@ class PathSink {
 public:
     virtual ~PathSink() = default;
     virtual void visit(const Vector& point, const Vector& direction) = 0;
+};
+
+// A PathSink that keeps everything it is given. Its memory grows with the
+// path, so it suits short runs and tests; certificates stream instead.
+class PathRecorder : public PathSink {
+public:
+    std::vector<Vector> points, directions;
+    void visit(const Vector& point, const Vector& direction) override {
+        points.push_back(point);
+        directions.push_back(direction);
+    }
 };
 
 struct SolveOptions {

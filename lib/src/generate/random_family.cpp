@@ -10,16 +10,6 @@
 namespace orthoray {
 namespace {
 
-// Records the trajectory the reference tracer reports.
-class PathRecorder : public PathSink {
-public:
-    std::vector<Vector> points, directions;
-    void visit(const Vector& p, const Vector& v) override {
-        points.push_back(p);
-        directions.push_back(v);
-    }
-};
-
 // k / q with q drawn from 1..denominator and k from [lo * q, hi * q].
 Rational random_number(std::mt19937_64& rng, const RandomFamily& f, std::int64_t lo,
                        std::int64_t hi) {
