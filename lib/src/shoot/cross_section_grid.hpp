@@ -25,13 +25,15 @@
 // member lies in [key, key + h_k - 1], where key is the member's smallest
 // possible depth in the cell (clamped to the element's own depth range).
 // Members sorted by key: those with key + h - 1 <= D(p) (h the largest side)
-// lie behind p and are skipped by one binary search, and once a hit at depth
-// D* is known, members with key > D* cannot be met at or before it. All
+// lie behind p and are skipped (counted without branches, or found by a
+// binary search in long lists), and once a hit at depth D* is known,
+// members with key > D* cannot be met at or before it. All
 // arithmetic is exact integer arithmetic on values bounded as in
 // lattice_int.hpp (|a_j| <= 2B, offsets into the grid <= 4B, keys <= 3B).
 #pragma once
 
-#include "shoot/uniform_grid.hpp"
+#include "shoot/element_box.hpp"
+#include "shoot/uniform_grid.hpp" // Shot
 
 #include <algorithm>
 #include <array>
