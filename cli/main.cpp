@@ -2,23 +2,45 @@
 #include "commands.hpp"
 #include "orthoray/parse.hpp"
 
+#include <cstdlib>
+#include <gmp.h>
 #include <iostream>
 #include <new>
 #include <string>
 
+namespace {
+
+// GMP's own allocator aborts when memory runs out; these throw instead, so
+// that running out (of --max-memory, say) is the resource limit it is.
+void* gmp_allocate(std::size_t size) {
+    if (void* p = std::malloc(size)) return p;
+    throw std::bad_alloc();
+}
+void* gmp_reallocate(void* old, std::size_t, std::size_t size) {
+    if (void* p = std::realloc(old, size)) return p;
+    throw std::bad_alloc();
+}
+void gmp_free(void* p, std::size_t) {
+    std::free(p);
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     using namespace orthoray::cli;
-    CLI::App app{"orthoray: decides exactly whether a light ray among axis-aligned mirrors\n"
-                 "reaches a target point, and proves the answer with a certificate.\n\n"
-                 "Example:\n"
-                 "  orthoray solve instances/2d/box-corner-3x5.scene --certificate path.cert\n"
-                 "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
-                 "  orthoray generate box --sides 3 5 -o box.scene\n"
-                 "  orthoray bounds box.scene\n\n"
-                 "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
-                 "3 a resource limit was reached before an answer.\n"
-                 "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
-                 "docs/semantics.md. Pictures: docs/render.md."};
+    mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
+    CLI::App app{
+        "orthoray: decides exactly whether a light ray among axis-aligned mirrors\n"
+        "reaches a target point, and proves the answer with a certificate.\n\n"
+        "Example:\n"
+        "  orthoray solve instances/2d/box-corner-3x5.scene --certificate path.cert\n"
+        "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
+        "  orthoray generate box --sides 3 5 -o box.scene\n"
+        "  orthoray bounds box.scene\n\n"
+        "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
+        "3 a resource limit (steps, time, memory) or SIGINT/SIGTERM stopped the run first.\n"
+        "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
+        "docs/semantics.md. Pictures: docs/render.md."};
     app.name("orthoray");
     app.require_subcommand(1);
     app.set_version_flag("--version", "orthoray 0.1.0");

@@ -3,6 +3,7 @@
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "run_monitor.hpp"
 #include "scene_format_option.hpp"
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,8 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <new>
+#include <optional>
 #include <vector>
 
 namespace orthoray::cli {
@@ -20,8 +23,9 @@ namespace {
 
 struct SolveArgs {
     std::string file, certificate, format, certificate_format = "text";
-    bool json = false;
-    std::uint64_t max_steps = 0;
+    bool json = false, quiet = false;
+    std::uint64_t max_steps = 0, max_memory = 0;
+    double timeout = 0;
     std::string engine = "lattice", detector = "first-state", arithmetic = "auto", shooter = "auto";
 };
 
@@ -51,7 +55,8 @@ void print_json(const Answer& a, double seconds) {
     std::string reflections = a.reflections.get_str();
     std::cout << "{\"answer\":" << nlohmann::json(answer_word(a)).dump()
               << ",\"reason\":" << nlohmann::json(to_string(a.reason)).dump();
-    if (a.reason == Reason::limit) std::cout << ",\"limit\":\"steps\"";
+    if (a.reason == Reason::limit)
+        std::cout << ",\"limit\":" << nlohmann::json(to_string(a.limit)).dump();
     std::cout << ",\"reflections\":" << reflections;
     if (a.reason == Reason::cycle) std::cout << ",\"period\":" << reflections;
     std::cout << ",\"engine\":" << nlohmann::json(a.engine).dump()
@@ -63,10 +68,25 @@ void print_json(const Answer& a, double seconds) {
     std::cout << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
 }
 
+// Why a run stopped, in the words of the option that set the limit.
+const char* limit_note(Limit limit) {
+    switch (limit) {
+    case Limit::steps:
+        return " (--max-steps reached)";
+    case Limit::time:
+        return " (--timeout reached)";
+    case Limit::memory:
+        return " (out of memory)";
+    case Limit::interrupt:
+        return " (interrupted)";
+    }
+    return "";
+}
+
 void print_text(const Answer& a, double seconds) {
     std::printf("answer       %s\n", answer_word(a));
     std::printf("reason       %s%s\n", to_string(a.reason),
-                a.reason == Reason::limit ? " (--max-steps reached)" : "");
+                a.reason == Reason::limit ? limit_note(a.limit) : "");
     std::printf("%-12s %s\n", a.reason == Reason::cycle ? "period" : "reflections",
                 a.reflections.get_str().c_str());
     std::printf("engine       %s (%s%s%s)\n", a.engine.c_str(), a.arithmetic.c_str(),
@@ -74,15 +94,48 @@ void print_text(const Answer& a, double seconds) {
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
+// What the run reports when memory ran out before an engine could say how
+// far it got (while reading or scaling the scene).
+Answer out_of_memory(const char* engine) {
+    Answer answer;
+    answer.limit = Limit::memory;
+    answer.engine = engine;
+    return answer;
+}
+
 int run(const SolveArgs& args, const CLI::Option* max_steps) {
-    const Scene scene = load_scene(
-        args.file, scene_format_named(args.format)); // bad input ends here, before any output
+    const auto begin_command = std::chrono::steady_clock::now();
+    if (args.max_memory > 0) limit_memory(args.max_memory);
+    // From here on SIGINT and SIGTERM end the run with the usual output.
+    const InterruptGuard interrupts;
+    auto report = [&](const Answer& answer, double seconds) {
+        if (args.json)
+            print_json(answer, seconds);
+        else
+            print_text(answer, seconds);
+        if (!answer.decided()) return limit;
+        return answer.yes() ? yes : no;
+    };
+    Scene scene;
+    try {
+        scene =
+            load_scene(args.file,
+                       scene_format_named(args.format)); // bad input ends here, before any output
+    } catch (const std::bad_alloc&) {
+        return report(out_of_memory(args.engine.c_str()), 0);
+    }
     SolveOptions options;
     options.engine = engines.at(args.engine);
     options.cycle_detector = detectors.at(args.detector);
     options.arithmetic = arithmetics.at(args.arithmetic);
     options.shooter = shooters.at(args.shooter);
     if (max_steps->count() > 0) options.max_steps = args.max_steps;
+    std::optional<std::chrono::steady_clock::time_point> deadline;
+    if (args.timeout > 0)
+        deadline = begin_command + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                       std::chrono::duration<double>(args.timeout));
+    SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph);
+    options.monitor = &monitor;
 
     std::ofstream cert_file;
     std::unique_ptr<CertificateWriter> writer;
@@ -97,17 +150,19 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
         options.path = writer.get();
     }
     auto begin = std::chrono::steady_clock::now();
-    const Answer answer = solve(scene, options);
+    Answer answer;
+    try {
+        answer = solve(scene, options);
+    } catch (const std::bad_alloc&) {
+        answer = out_of_memory(args.engine.c_str());
+    }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    monitor.erase_progress();
+    // A limit, an interrupt included, still ends the certificate properly:
+    // `partial` and `end` after the last complete point.
     if (writer) writer->finish(answer);
-
-    if (args.json)
-        print_json(answer, seconds);
-    else
-        print_text(answer, seconds);
-    if (!answer.decided()) return limit;
-    return answer.yes() ? yes : no;
+    return report(answer, seconds);
 }
 
 } // namespace
@@ -122,7 +177,8 @@ Command add_solve(CLI::App& app) {
                  "answer yes: the ray reaches the target (reason hit) after `reflections`\n"
                  "reflections; answer no: it escapes to infinity, is absorbed, or is periodic\n"
                  "(reason cycle; `period` reflections per period) without passing the target.\n"
-                 "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 --max-steps reached.");
+                 "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 a limit (--max-steps,\n"
+                 "--timeout, --max-memory, SIGINT or SIGTERM) stopped the run first.");
     cmd->add_option("FILE", args->file,
                     "the scene: .scene text (docs/scene-format.md) or JSON (docs/scene-json.md)")
         ->required();
@@ -152,6 +208,16 @@ Command add_solve(CLI::App& app) {
                                : "found '" + text + "', expected a whole number N >= 0";
                 },
                 "N >= 0"));
+    cmd->add_option("--timeout", args->timeout,
+                    "stop after SECONDS (a decimal, counted from the start) with answer unknown "
+                    "(reason limit, limit time) and exit 3")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--max-memory", args->max_memory,
+                    "let the process grow by at most MB megabytes of address space; running out "
+                    "answers unknown (reason limit, limit memory), exit 3")
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+    cmd->add_flag("--quiet", args->quiet,
+                  "no progress line (it is shown on long runs only when stderr is a terminal)");
     cmd->add_option("--engine", args->engine,
                     "lattice (default: integer lattice states, exact uniform grid), reference "
                     "(naive rational O(n) scan per reflection, the test oracle), graph (explicit "

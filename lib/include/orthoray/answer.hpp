@@ -12,6 +12,10 @@ namespace orthoray {
 // never does (answer no). limit: a resource limit stopped the run first.
 enum class Reason { hit, escape, absorbed, cycle, limit };
 
+// Which resource limit stopped a run (Reason::limit): the reflection cap, the
+// time allowed, memory, or a request from outside (a signal such as SIGINT).
+enum class Limit { steps, time, memory, interrupt };
+
 struct Answer {
     Reason reason = Reason::limit;
     // hit: reflections strictly before the ray first reaches the target;
@@ -21,7 +25,9 @@ struct Answer {
     std::string engine; // which engine decided it ("lattice", "reference", "graph")
     std::string
         arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
-    std::string shooter; // how the lattice engine found next hits: "grid", "bvh", "section", "pieces" (2D), or ""
+    Limit limit = Limit::steps; // which limit, when reason is Reason::limit
+    std::string shooter;        // how the lattice engine found next hits: "grid", "bvh", "section",
+                                // "pieces" (2D), or ""
 
     // What the lattice engine built before or while stepping.
     struct Setup {
@@ -36,6 +42,8 @@ struct Answer {
 
 // "hit", "escape", "absorbed", "cycle", "limit".
 const char* to_string(Reason reason);
+// "steps", "time", "memory", "interrupt".
+const char* to_string(Limit limit);
 // "yes", "no", "unknown".
 const char* answer_word(const Answer& answer);
 

@@ -62,6 +62,18 @@ public:
     }
 };
 
+// Watches a run from outside. The engines call poll() between chunks of work,
+// sized to take about 10 ms each, so that a limit it reports (a deadline, a
+// signal) stops the run well within 100 ms. The monitor is never called from
+// inside a chunk: the stepping loops stay free of checks.
+class RunMonitor {
+public:
+    virtual ~RunMonitor() = default;
+    // `reflections` performed so far. A limit ends the run with Reason::limit,
+    // that limit, and the reflections performed.
+    virtual std::optional<Limit> poll(std::uint64_t reflections) = 0;
+};
+
 struct SolveOptions {
     Engine engine = Engine::lattice;
     CycleDetector cycle_detector = CycleDetector::first_state;
@@ -74,8 +86,11 @@ struct SolveOptions {
     // Engine::graph refuses (Reason::limit) scenes with more lattice states.
     std::uint64_t max_graph_states = 2'000'000;
     PathSink* path = nullptr;
+    RunMonitor* monitor = nullptr;
 };
 
+// Running out of memory while solving is a limit too (Reason::limit,
+// Limit::memory), not an exception.
 Answer solve(const Scene& scene, const SolveOptions& options = {});
 
 } // namespace orthoray

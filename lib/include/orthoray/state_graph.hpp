@@ -10,6 +10,7 @@
 
 #include "orthoray/answer.hpp"
 #include "orthoray/scene.hpp"
+#include "orthoray/solve.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -23,7 +24,10 @@ struct StateGraphReport {
     Answer answer;
 };
 
-// std::nullopt when the scene has more than max_states lattice states.
-std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uint64_t max_states);
+// std::nullopt when the scene has more than max_states lattice states. A
+// monitor is polled every 1024 states; when it reports a limit the report's
+// answer is that limit (Reason::limit, 0 reflections).
+std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uint64_t max_states,
+                                                    RunMonitor* monitor = nullptr);
 
 } // namespace orthoray

@@ -18,6 +18,20 @@ const char* to_string(Reason reason) {
     return "?";
 }
 
+const char* to_string(Limit limit) {
+    switch (limit) {
+    case Limit::steps:
+        return "steps";
+    case Limit::time:
+        return "time";
+    case Limit::memory:
+        return "memory";
+    case Limit::interrupt:
+        return "interrupt";
+    }
+    return "?";
+}
+
 const char* answer_word(const Answer& answer) {
     if (!answer.decided()) return "unknown";
     return answer.yes() ? "yes" : "no";

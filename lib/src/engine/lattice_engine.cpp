@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
+#include <optional>
 
 namespace orthoray::engine {
 namespace {
@@ -113,6 +115,38 @@ public:
         }
     }
 
+    // advance() in chunks, polling the monitor between them (without one, a
+    // single call). A chunk is sized from the last one's rate to take about
+    // 10 ms, so a stop request is seen within a few tens of milliseconds
+    // however slow a reflection is, and the loop itself has no checks.
+    template <class Shoot>
+    bool advance_in_chunks(Shoot&& shoot, std::uint64_t until) {
+        if (!options_.monitor) return advance(shoot, until);
+        using Clock = std::chrono::steady_clock;
+        constexpr double chunk_seconds = 0.01;
+        std::uint64_t chunk = 64;
+        while (true) {
+            if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
+                answer_.limit = *limit;
+                return finish(Reason::limit);
+            }
+            if (reflections_ >= until) return false;
+            const std::uint64_t next = until - reflections_ > chunk ? reflections_ + chunk : until;
+            const auto begin = Clock::now();
+            if (advance(shoot, next)) return true;
+            const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+            const double scaled = seconds > 0 ? chunk * (chunk_seconds / seconds) : 2.0 * chunk;
+            chunk = static_cast<std::uint64_t>(
+                std::clamp(scaled, 1.0, std::min(2.0 * chunk, double(std::uint64_t{1} << 24))));
+        }
+    }
+
+    // Ends the run with a limit that struck outside advance() (memory).
+    void stop(Limit limit) {
+        answer_.limit = limit;
+        finish(Reason::limit);
+    }
+
     std::uint64_t reflections() const { return reflections_; }
     const Int (&target() const)[M] { return target_; }
     Answer& answer() { return answer_; }
@@ -148,7 +182,7 @@ double seconds_since(std::chrono::steady_clock::time_point begin) {
 template <class Int, int M, class Detector, class NextHit>
 Answer finish_with(Run<Int, M, Detector>& run, const char* name, const NextHit& shooter) {
     run.answer().shooter = name;
-    run.advance(
+    run.advance_in_chunks(
         [&](const State<Int, M>& s, std::uint32_t) { return shooter.shoot(s.p, s.negative); },
         ~std::uint64_t{0});
     return run.answer();
@@ -189,7 +223,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
             return grid.shoot(s.p, s.negative);
         };
-        if (run.advance(by_grid, first)) return run.answer();
+        if (run.advance_in_chunks(by_grid, first)) return run.answer();
         // Piece tables may grow quadratic with crossings: past 64 pieces a
         // mirror on average, stay on the grid.
         begin = std::chrono::steady_clock::now();
@@ -202,7 +236,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
             // Until the ray first reflects, the tables cannot say where it is.
             bool placed = false;
             typename lattice::PieceTable<Int>::Cursor where;
-            run.advance(
+            run.advance_in_chunks(
                 [&](const State<Int, M>& s, std::uint32_t mirror) {
                     if (!placed) {
                         if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
@@ -258,10 +292,17 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
 template <class Int, int M, class Detector>
 Answer run(const LatticeScene& ls, const SolveOptions& options) {
     Run<Int, M, Detector> run(ls, options);
-    if constexpr (M == 2)
-        return run_planar(run, ls, options);
-    else
-        return run_spatial(run, ls, options);
+    try {
+        if constexpr (M == 2)
+            return run_planar(run, ls, options);
+        else
+            return run_spatial(run, ls, options);
+    } catch (const std::bad_alloc&) {
+        // Building a shooter (grid, tables, hierarchy) is what allocates;
+        // the reflections performed before it are still exact.
+        run.stop(Limit::memory);
+        return run.answer();
+    }
 }
 
 template <class Int, int M>

@@ -3,6 +3,9 @@
 #include "engine/cycle_detector.hpp"
 #include "engine/reference_step.hpp"
 
+#include <chrono>
+#include <new>
+
 namespace orthoray::engine {
 
 ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v) {
@@ -77,21 +80,39 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
     RationalState s{scene.start, scene.direction};
     if (options.path) options.path->visit(s.p, s.v);
     Detector detector;
-    for (std::uint64_t reflections = 0;;) {
-        ReferenceEvent e = reference_step(scene, s.p, s.v);
-        if (reference_passes(scene, scene.target, s.p, s.v, e))
-            return finish(Reason::hit, reflections);
-        if (e.escape) return finish(Reason::escape, reflections);
-        if (e.absorbed) {
-            if (options.path) options.path->visit(e.point, s.v);
-            return finish(Reason::absorbed, reflections);
+    // A reflection costs a scan of every element, so the monitor is polled
+    // by the clock (every 10 ms) rather than by a count of reflections.
+    using Clock = std::chrono::steady_clock;
+    auto next_poll = Clock::now();
+    std::uint64_t reflections = 0;
+    try {
+        for (;;) {
+            if (options.monitor && Clock::now() >= next_poll) {
+                if (const std::optional<Limit> limit = options.monitor->poll(reflections)) {
+                    answer.limit = *limit;
+                    return finish(Reason::limit, reflections);
+                }
+                next_poll = Clock::now() + std::chrono::milliseconds(10);
+            }
+            ReferenceEvent e = reference_step(scene, s.p, s.v);
+            if (reference_passes(scene, scene.target, s.p, s.v, e))
+                return finish(Reason::hit, reflections);
+            if (e.escape) return finish(Reason::escape, reflections);
+            if (e.absorbed) {
+                if (options.path) options.path->visit(e.point, s.v);
+                return finish(Reason::absorbed, reflections);
+            }
+            if (options.max_steps && reflections == *options.max_steps)
+                return finish(Reason::limit, reflections);
+            s = {e.point, e.direction};
+            ++reflections;
+            if (options.path) options.path->visit(s.p, s.v);
+            if (auto period = detector.observe(s, reflections))
+                return finish(Reason::cycle, *period);
         }
-        if (options.max_steps && reflections == *options.max_steps)
-            return finish(Reason::limit, reflections);
-        s = {e.point, e.direction};
-        ++reflections;
-        if (options.path) options.path->visit(s.p, s.v);
-        if (auto period = detector.observe(s, reflections)) return finish(Reason::cycle, *period);
+    } catch (const std::bad_alloc&) {
+        answer.limit = Limit::memory;
+        return finish(Reason::limit, reflections);
     }
 }
 

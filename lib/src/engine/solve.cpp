@@ -5,6 +5,7 @@
 #include "engine/reference_tracer.hpp"
 #include "orthoray/state_graph.hpp"
 
+#include <new>
 #include <stdexcept>
 
 namespace orthoray {
@@ -15,13 +16,22 @@ namespace {
 // reflections (a cycle of period L is seen at reflection L + 1).
 Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     if (options.path) throw std::invalid_argument("the graph engine does not write certificates");
-    auto report = explore_state_graph(scene, options.max_graph_states);
     Answer answer;
     answer.engine = "graph";
     answer.arithmetic = "rational";
-    if (!report) return answer; // too many states: Reason::limit, 0 reflections
+    std::optional<StateGraphReport> report;
+    try {
+        report = explore_state_graph(scene, options.max_graph_states, options.monitor);
+    } catch (const std::bad_alloc&) {
+        answer.limit = Limit::memory;
+        return answer;
+    }
+    if (!report) { // too many states to hold: Reason::limit, 0 reflections
+        answer.limit = Limit::memory;
+        return answer;
+    }
     answer = report->answer;
-    if (options.max_steps) {
+    if (answer.decided() && options.max_steps) {
         Integer needed = answer.reflections + (answer.reason == Reason::cycle ? 1 : 0);
         Integer cap = Integer(static_cast<unsigned long>(*options.max_steps));
         if (needed > cap) {

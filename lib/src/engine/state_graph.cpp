@@ -22,7 +22,8 @@ enum : std::size_t { start_vertex = 0, escape_vertex = 1, absorbed_vertex = 2, f
 
 } // namespace
 
-std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uint64_t max_states) {
+std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uint64_t max_states,
+                                                    RunMonitor* monitor) {
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     const unsigned directions = 1u << ls.dim;
 
@@ -85,6 +86,15 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
     };
     step(start_vertex, scene.start, scene.direction);
     for (std::size_t k = 0; k < key_of.size(); ++k) {
+        if (monitor && k % 1024 == 0) {
+            if (const std::optional<Limit> limit = monitor->poll(0)) {
+                StateGraphReport stopped;
+                stopped.answer.engine = "graph";
+                stopped.answer.arithmetic = "rational";
+                stopped.answer.limit = *limit;
+                return stopped;
+            }
+        }
         Coords c;
         for (int j = 0; j < ls.dim; ++j) c[j] = key_of[k].first[j];
         step(first_state + k, ls.point(c), ls.direction(key_of[k].second));
