@@ -18,6 +18,13 @@ namespace {
 
 constexpr std::uint64_t step_cap = 4000;
 
+// Never stops a run, but makes the engine step in chunks (the first ones
+// short), so that every chunk boundary must resume exactly where it paused.
+class Watcher : public RunMonitor {
+public:
+    std::optional<Limit> poll(std::uint64_t) override { return std::nullopt; }
+};
+
 Answer run(const Scene& scene, Engine engine, CycleDetector detector = CycleDetector::first_state,
            Arithmetic arithmetic = Arithmetic::automatic, std::uint64_t cap = step_cap,
            Shooter shooter = Shooter::automatic) {
@@ -55,6 +62,14 @@ void check_scene(const Scene& scene, Tally& tally) {
     for (Shooter shooter : {Shooter::grid, Shooter::bvh, Shooter::pieces, Shooter::section})
         REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state,
                             Arithmetic::automatic, step_cap, shooter)) == summary(lattice));
+    {
+        Watcher watcher;
+        SolveOptions o;
+        o.shooter = Shooter::pieces;
+        o.max_steps = step_cap;
+        o.monitor = &watcher;
+        REQUIRE(summary(solve(scene, o)) == summary(lattice));
+    }
     for (Arithmetic wider : {Arithmetic::int128, Arithmetic::wide})
         REQUIRE(summary(run(scene, Engine::lattice, CycleDetector::first_state, wider)) ==
                 summary(lattice));

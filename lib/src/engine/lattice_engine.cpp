@@ -81,38 +81,24 @@ public:
     }
 
     // Steps with `shoot(state, mirror)` until an answer, or until `until`
-    // reflections have been performed (then returns false).
+    // reflections have been performed (then returns false). A call may end
+    // after its last shot was computed but before that reflection is taken;
+    // the shot is kept and taken first by the next call, since a shooter may
+    // have moved on with it (the piece tables' cursor does).
     template <class Shoot>
     bool advance(Shoot&& shoot, std::uint64_t until) {
         // One bound for both reasons to stop stepping.
         const std::uint64_t stop =
             options_.max_steps ? std::min(until, *options_.max_steps) : until;
-        while (true) {
-            const lattice::Shot<Int> shot = shoot(s_, mirror_);
-            if (ls_.target_reachable && shot.near_target && passes(target_, s_, shot))
-                return finish(Reason::hit);
-            if (shot.escape) return finish(Reason::escape);
-            for (int j = 0; j < M; ++j) s_.p[j] += sign<Int>(s_.negative, j) * shot.t;
-            if (shot.absorber) {
-                if (options_.path) report();
-                return finish(Reason::absorbed);
-            }
-            if (reflections_ == stop) {
-                if (options_.max_steps && reflections_ == *options_.max_steps)
-                    return finish(Reason::limit);
-                for (int j = 0; j < M; ++j) // not taken yet: undo the move
-                    s_.p[j] -= sign<Int>(s_.negative, j) * shot.t;
-                return false;
-            }
-            s_.negative ^= shot.flip;
-            mirror_ = shot.mirror;
-            ++reflections_;
-            if (options_.path) report();
-            if (auto period = detector_.observe(s_, reflections_)) {
-                reflections_ = *period;
-                return finish(Reason::cycle);
-            }
+        if (pending_) {
+            const lattice::Shot<Int> shot = *pending_;
+            pending_.reset();
+            if (const Step step = take(shot, stop); step != Step::next)
+                return step == Step::answered;
         }
+        while (true)
+            if (const Step step = take(shoot(s_, mirror_), stop); step != Step::next)
+                return step == Step::answered;
     }
 
     // advance() in chunks, polling the monitor between them (without one, a
@@ -160,6 +146,44 @@ private:
     std::uint64_t reflections_ = 0;
     Detector detector_;
     Answer answer_;
+
+    std::optional<lattice::Shot<Int>> pending_; // computed, reflection not yet taken
+
+    enum class Step { next, answered, paused };
+    Step answered(Reason reason) {
+        finish(reason);
+        return Step::answered;
+    }
+
+    // One step with `shot`: go on, an answer, or a pause at `stop` (the
+    // shot kept for the next call).
+    [[gnu::always_inline]] Step take(const lattice::Shot<Int>& shot, std::uint64_t stop) {
+        if (ls_.target_reachable && shot.near_target && passes(target_, s_, shot))
+            return answered(Reason::hit);
+        if (shot.escape) return answered(Reason::escape);
+        for (int j = 0; j < M; ++j) s_.p[j] += sign<Int>(s_.negative, j) * shot.t;
+        if (shot.absorber) {
+            if (options_.path) report();
+            return answered(Reason::absorbed);
+        }
+        if (reflections_ == stop) {
+            if (options_.max_steps && reflections_ == *options_.max_steps)
+                return answered(Reason::limit);
+            for (int j = 0; j < M; ++j) // not taken yet: undo the move, keep the shot
+                s_.p[j] -= sign<Int>(s_.negative, j) * shot.t;
+            pending_ = shot;
+            return Step::paused;
+        }
+        s_.negative ^= shot.flip;
+        mirror_ = shot.mirror;
+        ++reflections_;
+        if (options_.path) report();
+        if (auto period = detector_.observe(s_, reflections_)) {
+            reflections_ = *period;
+            return answered(Reason::cycle);
+        }
+        return Step::next;
+    }
 
     void report() {
         lattice::Coords c;
