@@ -538,3 +538,31 @@ TEST_CASE("bounds: bad input and usage are status 2", "[cli][bounds]") {
     r = run_cli("bounds --json --frobnicate " + quote(instance(box_corner)));
     require_bad_input(r);
 }
+
+TEST_CASE("solve on generated long orbits gives the closed-form answer", "[cli]") {
+    // The command line steps in chunks (it polls for limits and signals) and
+    // switches 2D runs to piece tables: both must resume exactly. Each scene
+    // states its answer in an '# expect:' line.
+    TempDir dir;
+    const std::vector<std::string> families = {
+        "coprime-box --k 15",          // 65,535 reflections: past the grid phase, on piece tables
+        "square --direction 1000 999", // cycle of period 3,998
+        "hallway --length 100000 --slope 1/1000", // hit after 100
+        "coprime-cuboid --k 4 --target far",      // 3D
+        "box --sides 4999 5001 --target far"};    // 2D, long
+    for (const std::string& family : families) {
+        INFO(family);
+        const std::string scene = dir.path("s.scene");
+        REQUIRE(run_cli("generate " + family + " -o " + quote(scene)).status == 0);
+        const std::string text = slurp(scene);
+        const std::size_t at = text.find("# expect: ");
+        REQUIRE(at != std::string::npos);
+        std::istringstream expect(text.substr(at + 10, text.find('\n', at) - at - 10));
+        std::string answer, reason, count;
+        expect >> answer >> reason >> count;
+        const nlohmann::json j = parse_json(run_cli("solve --json " + quote(scene)).out);
+        CHECK(j["answer"] == answer);
+        CHECK(j["reason"] == reason);
+        CHECK(j[reason == "cycle" ? "period" : "reflections"].dump() == count);
+    }
+}
