@@ -232,8 +232,8 @@ TEST_CASE("solve --max-memory turns running out of memory into limit memory", "[
 #endif
 
 TEST_CASE("limit options reject what is not a limit", "[limits][cli]") {
-    for (const std::string bad :
-         {"--timeout 0", "--timeout -1", "--timeout x", "--max-memory 0", "--max-memory lots"}) {
+    for (const std::string bad : {"--timeout 0", "--timeout -1", "--timeout x", "--timeout 1e300",
+                                  "--max-memory 0", "--max-memory lots"}) {
         CAPTURE(bad);
         const auto r =
             run_cli("solve " + bad + " '" +
