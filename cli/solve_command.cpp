@@ -211,7 +211,8 @@ Command add_solve(CLI::App& app) {
     cmd->add_option("--timeout", args->timeout,
                     "stop after SECONDS (a decimal, counted from the start) with answer unknown "
                     "(reason limit, limit time) and exit 3")
-        ->check(CLI::PositiveNumber);
+        // Past 10^9 seconds (31 years) the deadline would overflow the clock.
+        ->check(CLI::PositiveNumber & CLI::Range(0.0, 1e9));
     cmd->add_option("--max-memory", args->max_memory,
                     "let the process grow by at most MB megabytes of address space; running out "
                     "answers unknown (reason limit, limit memory), exit 3")

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <pty.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -144,7 +145,9 @@ TEST_CASE("solve --timeout stops a long run with limit time", "[limits][cli]") {
     const fs::path dir = fresh_dir("timeout");
     const std::string scene = scene_file(dir, long_orbit(40));
     const auto begin = std::chrono::steady_clock::now();
-    const auto r = run_cli("solve --json --timeout 0.3 '" + scene + "' --certificate '" +
+    // Past the second after which a terminal would get a progress line:
+    // stderr here is a file, so it must stay empty.
+    const auto r = run_cli("solve --json --timeout 1.3 '" + scene + "' --certificate '" +
                            (dir / "c.cert").string() + "'");
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -230,8 +233,8 @@ TEST_CASE("solve --max-memory turns running out of memory into limit memory", "[
 #endif
 
 TEST_CASE("limit options reject what is not a limit", "[limits][cli]") {
-    for (const std::string bad :
-         {"--timeout 0", "--timeout -1", "--timeout x", "--max-memory 0", "--max-memory lots"}) {
+    for (const std::string bad : {"--timeout 0", "--timeout -1", "--timeout x", "--timeout 1e300",
+                                  "--max-memory 0", "--max-memory lots"}) {
         CAPTURE(bad);
         const auto r =
             run_cli("solve " + bad + " '" +
@@ -240,4 +243,50 @@ TEST_CASE("limit options reject what is not a limit", "[limits][cli]") {
         CHECK(r.out.empty());
         CHECK_FALSE(r.err.empty());
     }
+}
+
+namespace {
+
+// Runs `solve --timeout 1.6 SCENE [extra]` with stderr on a pseudo-terminal
+// and returns what the terminal received.
+std::string terminal_stderr(const std::string& scene, const char* extra) {
+    int terminal = -1, child_side = -1;
+    REQUIRE(openpty(&terminal, &child_side, nullptr, nullptr, nullptr) == 0);
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        dup2(child_side, STDERR_FILENO);
+        close(terminal);
+        execl(ORTHORAY_CLI, ORTHORAY_CLI, "solve", scene.c_str(), "--timeout", "1.6", extra,
+              static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    close(child_side);
+    std::string seen;
+    char buffer[4096];
+    for (ssize_t n; (n = read(terminal, buffer, sizeof buffer)) > 0;) seen.append(buffer, n);
+    close(terminal);
+    int status = 0;
+    waitpid(child, &status, 0);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 3);
+    return seen;
+}
+
+} // namespace
+
+TEST_CASE("a long run on a terminal shows a progress line and erases it", "[limits][cli]") {
+    const fs::path dir = fresh_dir("progress");
+    const std::string scene = scene_file(dir, long_orbit(40));
+    const std::string shown = terminal_stderr(scene, "--json");
+    CHECK(shown.find(" reflections, ") != std::string::npos);
+    CHECK(shown.find("/s, ") != std::string::npos);
+    CHECK(shown.find("states bound") != std::string::npos);
+    // The last thing written returns to the line's start and clears it.
+    REQUIRE(shown.size() >= 4);
+    CHECK(shown.substr(shown.size() - 4) == "\r\033[K");
+    CHECK(terminal_stderr(scene, "--quiet").empty());
+    fs::remove_all(dir);
 }

@@ -277,7 +277,10 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
     // Resolve each piece with one forward shot, merging runs with one map.
     table.slots_.resize(std::size_t{n} * 4);
     std::vector<const Break*> b; // the current slot's breakpoints, reused
-    for (const auto& [key, m] : order) {
+    for (const auto& ordered : order) {
+        // A plain variable: clang 14 (the fuzz build) cannot capture a
+        // structured binding in the lambdas below.
+        const auto m = ordered.second;
         for (unsigned d = 0; d < 4; ++d) {
             const std::uint32_t slot = m * 4 + d;
             Cursor& range = table.slots_[slot];
