@@ -36,7 +36,7 @@ std::map<std::string, std::string> expectations() {
 TEST_CASE("every file of the bad-input corpus has its exact message", "[cli][bad-input]") {
     const std::map<std::string, std::string> expected = expectations();
     CHECK(expected.size() >= 40);
-    int scenes = 0, certificates = 0;
+    int scenes = 0, json_scenes = 0, certificates = 0;
     for (const auto& entry : fs::directory_iterator(corpus)) {
         const std::string name = entry.path().filename().string();
         if (name == "expected.txt" || name == "certificate-scene.txt") continue;
@@ -48,7 +48,8 @@ TEST_CASE("every file of the bad-input corpus has its exact message", "[cli][bad
         CAPTURE(name);
         REQUIRE(fs::exists(corpus / name));
         const bool certificate = name.size() > 5 && name.substr(name.size() - 5) == ".cert";
-        (certificate ? certificates : scenes) += 1;
+        const bool json = name.size() > 5 && name.substr(name.size() - 5) == ".json";
+        (certificate ? certificates : json ? json_scenes : scenes) += 1;
         const std::string path = (corpus / name).string();
         const auto r = certificate
                            ? run_cli("verify '" + (corpus / "certificate-scene.txt").string() +
@@ -61,5 +62,6 @@ TEST_CASE("every file of the bad-input corpus has its exact message", "[cli][bad
         CHECK(r.err == corpus.string() + "/" + message + "\n");
     }
     CHECK(scenes >= 30);
+    CHECK(json_scenes >= 10);
     CHECK(certificates >= 8);
 }
