@@ -1,19 +1,11 @@
 #include "bounds/line_invariant.hpp"
 
+#include "lattice/lattice_int.hpp" // floor_div
+
 namespace orthoray::bounds {
 namespace {
 
-Integer gcd(const Integer& a, const Integer& b) {
-    Integer g;
-    mpz_gcd(g.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-    return g;
-}
-
-Integer floor_div(const Integer& a, const Integer& b) {
-    Integer q;
-    mpz_fdiv_q(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-    return q;
-}
+using lattice::floor_div;
 
 bool congruent(const Integer& a, const Integer& b, const Integer& G) {
     return G == 0 ? a == b : Integer((a - b) % G) == 0;

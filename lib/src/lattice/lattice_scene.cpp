@@ -5,12 +5,6 @@
 namespace orthoray::lattice {
 namespace {
 
-Integer lcm(const Integer& a, const Integer& b) {
-    Integer r;
-    mpz_lcm(r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-    return r;
-}
-
 Integer abs_of(const Integer& a) {
     return a < 0 ? Integer(-a) : a;
 }
