@@ -9,6 +9,8 @@
 #include "orthoray/parse.hpp"
 
 #include "certify/certificate_reader.hpp"
+#include "certify/induction_verifier.hpp"
+#include "certify/path_geometry.hpp"
 
 #include <array>
 #include <cstddef>
@@ -23,82 +25,12 @@
 namespace orthoray {
 namespace {
 
-// --------------------------------------------------------------- geometry --
-
-// What the ray from a point meets first (at the smallest t > 0).
-struct Event {
-    bool met = false;
-    Rational t;
-    bool absorbed = false;      // an absorber is among the elements met at t
-    std::array<bool, 3> flip{}; // normal axes of the mirrors met at t
-};
-
-Event first_met(const Scene& scene, const Vector& p, const Vector& v) {
-    Event best;
-    Rational t, q;
-    for (const Element& e : scene.elements) {
-        const int k = e.axis;
-        // A ray parallel to the element's plane never meets it, even inside it.
-        if (sgn(v[k]) == 0) continue;
-        t = (e.lo[k] - p[k]) / v[k];
-        // Nothing happens at t = 0 (a start point on a mirror does not reflect).
-        if (sgn(t) <= 0) continue;
-        if (best.met && t > best.t) continue;
-        bool inside = true;
-        for (int j = 0; j < scene.dim && inside; ++j) {
-            q = p[j] + t * v[j];
-            inside = e.lo[j] <= q && q <= e.hi[j]; // closed: edges and corners count
-        }
-        if (!inside) continue;
-        if (!best.met || t < best.t) {
-            best = Event{};
-            best.met = true;
-            best.t = t;
-        }
-        // Every element met at the same t acts: any absorber stops the ray,
-        // mirrors of one axis negate that component once.
-        if (e.kind == ElementKind::absorber)
-            best.absorbed = true;
-        else
-            best.flip[k] = true;
-    }
-    return best;
-}
-
-Vector advance(const Vector& p, const Vector& v, const Rational& t, int dim) {
-    Vector q;
-    for (int j = 0; j < dim; ++j) q[j] = p[j] + t * v[j];
-    return q;
-}
-
-bool same(const Vector& a, const Vector& b, int dim) {
-    for (int j = 0; j < dim; ++j)
-        if (a[j] != b[j]) return false;
-    return true;
-}
-
-// Does `target` = p + tau v hold for some 0 <= tau <= stop.t (any tau >= 0
-// when nothing is met)? Axes where v is zero must match exactly.
-bool on_ray(const Vector& target, const Vector& p, const Vector& v, const Event& stop, int dim) {
-    std::optional<Rational> tau;
-    for (int j = 0; j < dim; ++j) {
-        if (sgn(v[j]) == 0) {
-            if (target[j] != p[j]) return false;
-            continue;
-        }
-        Rational s = (target[j] - p[j]) / v[j];
-        if (tau && *tau != s) return false;
-        tau = std::move(s);
-    }
-    if (!tau) return true; // v == 0 cannot come from a valid scene; then only p itself
-    return sgn(*tau) >= 0 && (!stop.met || *tau <= stop.t);
-}
-
-std::string show(const Vector& a, int dim) {
-    std::string text = "(";
-    for (int j = 0; j < dim; ++j) text += (j ? ", " : "") + to_string(a[j]);
-    return text + ")";
-}
+using certify::advance;
+using certify::Event;
+using certify::first_met;
+using certify::on_ray;
+using certify::same;
+using certify::show;
 
 // Portable std::uint64_t -> mpz (unsigned long may be 32 bits).
 Integer to_integer(std::uint64_t n) {
@@ -291,6 +223,9 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
     const int dim = scene.dim;
     try {
         in.read_header(dim);
+        // `method induction` after `dim`: the interval exchange and its
+        // induction (docs/induction-certificates.md), checked by its own code.
+        if (in.keyword() == "method") return certify::verify_induction(scene, in);
         while (in.keyword() == "point") {
             in.expect("point", dim, "a number");
             path.point(in.vector(1, dim));
