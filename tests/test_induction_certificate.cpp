@@ -106,9 +106,9 @@ Scene hallway() {
 
 const std::string hallway_certificate = "orthoray-certificate 1\n"
                                         "dim 2\n"
-                                        "method induction\n"
                                         "point 0 0\n"
                                         "point 1 1\n"
+                                        "method induction\n"
                                         "direction 1 -1\n"
                                         "scale 1 1\n"
                                         "modulus 2\n"
@@ -146,9 +146,9 @@ Scene hallway_hit() {
 
 const std::string hallway_hit_certificate = "orthoray-certificate 1\n"
                                             "dim 2\n"
-                                            "method induction\n"
                                             "point 0 0\n"
                                             "point 1 1\n"
+                                            "method induction\n"
                                             "direction 1 -1\n"
                                             "scale 1 1\n"
                                             "modulus 2\n"
@@ -203,9 +203,9 @@ Scene box() {
 
 const std::string box_certificate = "orthoray-certificate 1\n"
                                     "dim 2\n"
-                                    "method induction\n"
                                     "point 0 0\n"
                                     "point 1 1\n"
+                                    "method induction\n"
                                     "direction 1 -1\n"
                                     "scale 1 1\n"
                                     "modulus 2\n"
@@ -283,7 +283,26 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
                        "is not the direction (1, -1)");
         Scene early = h;
         early.target = {Rational(1, 2), Rational(1, 2), 0};
-        expect_invalid(early, c, "the target lies on the segment from the start to point 1");
+        expect_invalid(early, c, "step 1: the target lies on the segment from point 0 to point 1");
+    }
+    SECTION("path prefix") {
+        const std::string two = "point 0 0\npoint 1 1\n";
+        expect_valid(h, replace(c, two, two + "point 2 0\npoint 3 1\n"),
+                     "valid: escape, 6 reflections");
+        expect_invalid(h, replace(c, two, two + "point 2 0\npoint 3 0\n"),
+                       "step 3: point 3 is (3, 0), but the ray from point 2 first meets an "
+                       "element at (3, 1)");
+        expect_invalid(hallway_hit(),
+                       replace(hallway_hit_certificate, two,
+                               two + "point 2 0\npoint 3 1\npoint 4 0\npoint 5 1\n"),
+                       "step 5: the target lies on the segment from point 4 to point 5");
+        expect_invalid(hallway_absorbed(),
+                       replace(c, two,
+                               two + "point 2 0\npoint 3 1\npoint 4 0\npoint 5 1\npoint 6 "
+                                     "0\npoint 7 1\n"),
+                       "header: the ray is absorbed at point 7 of the path prefix");
+        expect_invalid(h, replace(c, two, "point 0 0\n"),
+                       "header: the path prefix has only point 0");
     }
     SECTION("scale not integral, direction not diagonal") {
         expect_invalid(h, replace(c, "scale 1 1", "scale 1/2 1/2"), "not an integer");

@@ -109,7 +109,7 @@ struct StepSpec {
 };
 
 struct Parsed {
-    Vector p0, p1, v1;
+    Vector v1;
     Rational sx, sy;
     Integer modulus;
     std::vector<TransversalSpec> transversals;
@@ -138,12 +138,6 @@ Parsed parse(CertificateReader& in, int dim) {
     Parsed p;
     in.expect("method", 1, "'induction'");
     if (in.token(1) != "induction") in.fail(1, "'induction'");
-    in.advance();
-    in.expect("point", dim, "a number");
-    p.p0 = in.vector(1, dim);
-    in.advance();
-    in.expect("point", dim, "a number");
-    p.p1 = in.vector(1, dim);
     in.advance();
     in.expect("direction", dim, "a number");
     p.v1 = in.vector(1, dim);
@@ -365,7 +359,8 @@ struct Transversal {
 
 class InductionCheck {
 public:
-    InductionCheck(const Scene& scene, Parsed p) : scene_(scene), p_(std::move(p)) {}
+    InductionCheck(const Scene& scene, const PathPrefix& prefix, Parsed p)
+        : scene_(scene), prefix_(prefix), p_(std::move(p)) {}
 
     std::string run() {
         check_header();
@@ -393,25 +388,15 @@ private:
             fail("header", "induction certificates are for 2D scenes, the scene has dim " +
                                std::to_string(scene_.dim));
         const int dim = 2;
-        if (!same(p_.p0, scene_.start, dim))
-            fail("header", "point 0 is " + show(p_.p0, dim) + ", not the start point " +
-                               show(scene_.start, dim));
-        const Event e = first_met(scene_, scene_.start, scene_.direction);
-        if (!e.met)
-            fail("header", "the ray from the start meets no element, so there is no first "
-                           "reflection");
-        const Vector q = advance(scene_.start, scene_.direction, e.t, dim);
-        if (!same(p_.p1, q, dim))
-            fail("header", "point 1 is " + show(p_.p1, dim) +
-                               ", but the ray from the start first meets an element at " +
-                               show(q, dim));
-        if (e.absorbed) fail("header", "the ray from the start is absorbed at point 1");
-        if (on_ray(scene_.target, scene_.start, scene_.direction, e, dim))
-            fail("header", "the target lies on the segment from the start to point 1 (a path "
-                           "certificate with 0 reflections)");
-        Vector v = scene_.direction;
-        for (int j = 0; j < dim; ++j)
-            if (e.flip[j]) v[j] = -v[j];
+        // The prefix p0 .. pr was checked point by point like a path, with
+        // the target on none of its segments; the induction starts at p1.
+        if (prefix_.failure) throw Failure{*prefix_.failure};
+        if (prefix_.points < 2)
+            fail("header", "the path prefix has only point 0; the induction needs point 1");
+        if (prefix_.absorbed)
+            fail("header", "the ray is absorbed at point " + std::to_string(prefix_.points - 1) +
+                               " of the path prefix");
+        const Vector& v = prefix_.v1;
         if (!same(p_.v1, v, dim))
             fail("header", "direction " + show(p_.v1, dim) + " is not the direction " +
                                show(v, dim) + " the ray leaves point 1 in");
@@ -441,8 +426,8 @@ private:
         }
         lattice(scene_.start[0], p_.sx, "the start's x");
         lattice(scene_.start[1], p_.sy, "the start's y");
-        p1x_ = lattice(p_.p1[0], p_.sx, "point 1's x");
-        p1y_ = lattice(p_.p1[1], p_.sy, "point 1's y");
+        p1x_ = lattice(prefix_.p1[0], p_.sx, "point 1's x");
+        p1y_ = lattice(prefix_.p1[1], p_.sy, "point 1's y");
         tx_ = lattice(scene_.target[0], p_.sx, "the target's x");
         ty_ = lattice(scene_.target[1], p_.sy, "the target's y");
         wx_ = dy1_ * p1y_ - dx1_ * p1x_;
@@ -1151,6 +1136,7 @@ private:
     }
 
     const Scene& scene_;
+    const PathPrefix& prefix_;
     const Parsed p_;
     int dx1_ = 1, dy1_ = 1;
     Integer p1x_, p1y_, tx_, ty_, wx_;
@@ -1163,10 +1149,10 @@ private:
 
 } // namespace
 
-Verdict verify_induction(const Scene& scene, CertificateReader& in) {
+Verdict verify_induction(const Scene& scene, CertificateReader& in, const PathPrefix& prefix) {
     Parsed parsed = parse(in, scene.dim);
     try {
-        InductionCheck check(scene, std::move(parsed));
+        InductionCheck check(scene, prefix, std::move(parsed));
         return {true, check.run()};
     } catch (const Failure& failure) {
         return {false, failure.message};

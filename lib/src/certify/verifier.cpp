@@ -223,16 +223,25 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
     const int dim = scene.dim;
     try {
         in.read_header(dim);
-        // `method induction` after `dim`: the interval exchange and its
-        // induction (docs/induction-certificates.md), checked by its own code.
-        if (in.keyword() == "method") return certify::verify_induction(scene, in);
         while (in.keyword() == "point") {
             in.expect("point", dim, "a number");
             path.point(in.vector(1, dim));
             in.advance();
         }
         if (path.points() == 0) in.fail(0, "'point'");
-        if (in.keyword() != "answer") in.fail(0, "'point' or 'answer'");
+        // `method induction` after a path prefix: the interval exchange and
+        // its induction (docs/induction-certificates.md), checked by its own
+        // code once the prefix has been checked here like any path.
+        if (in.keyword() == "method") {
+            certify::PathPrefix prefix;
+            prefix.failure = path.failure();
+            prefix.points = path.points();
+            prefix.absorbed = path.stopped();
+            prefix.p1 = path.p1();
+            prefix.v1 = path.v1();
+            return certify::verify_induction(scene, in, prefix);
+        }
+        if (in.keyword() != "answer") in.fail(0, "'point', 'method' or 'answer'");
         in.expect("answer", 1, "yes, no or unknown");
         claim.answer = std::string(in.token(1));
         if (claim.answer != "yes" && claim.answer != "no" && claim.answer != "unknown")
