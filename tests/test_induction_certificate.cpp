@@ -421,8 +421,9 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
     }
     const std::size_t n = raw_states.size();
     const auto x_it = raw_of.find({px, py, dx1, dy1});
-    INFO("scene:\n" << orthoray::write_scene(scene) << "x " << px << " " << py << " " << dx1 << " "
-                     << dy1 << " scale " << sx << " " << sy);
+    INFO("scene:\n"
+         << orthoray::write_scene(scene) << "x " << px << " " << py << " " << dx1 << " " << dy1
+         << " scale " << sx << " " << sy);
     REQUIRE(x_it != raw_of.end());
     const std::size_t raw_x = x_it->second;
 

@@ -275,20 +275,46 @@ struct Range {
     bool contains(const Integer& j) const { return lo <= j && j <= hi; }
 };
 
-// Narrows `r` to the j with f(j) >= k.
-void at_least(Range& r, const Affine& f, const Integer& k) {
+// Narrows `r` to the j with a + b * j >= k; `q` is scratch space (this runs
+// for every piece and element, so it allocates nothing once warm).
+void at_least(Range& r, const Integer& a, const Integer& b, const Integer& k, Integer& q) {
     if (r.empty()) return;
-    if (sgn(f.b) == 0) {
-        if (f.a < k) r.hi = r.lo - 1;
-    } else if (sgn(f.b) > 0) {
-        r.lo = std::max(r.lo, ceil_div(k - f.a, f.b));
+    const int s = sgn(b);
+    if (s == 0) {
+        if (a < k) mpz_sub_ui(r.hi.get_mpz_t(), r.lo.get_mpz_t(), 1);
+        return;
+    }
+    mpz_sub(q.get_mpz_t(), k.get_mpz_t(), a.get_mpz_t());
+    if (s > 0) {
+        mpz_cdiv_q(q.get_mpz_t(), q.get_mpz_t(), b.get_mpz_t());
+        if (q > r.lo) r.lo = q;
     } else {
-        r.hi = std::min(r.hi, floor_div(k - f.a, f.b));
+        mpz_fdiv_q(q.get_mpz_t(), q.get_mpz_t(), b.get_mpz_t());
+        if (q < r.hi) r.hi = q;
     }
 }
 
-void at_most(Range& r, const Affine& f, const Integer& k) {
-    at_least(r, Affine{-f.a, -f.b}, -k);
+// Narrows `r` to the j with a + b * j <= k.
+void at_most(Range& r, const Integer& a, const Integer& b, const Integer& k, Integer& q) {
+    if (r.empty()) return;
+    const int s = sgn(b);
+    if (s == 0) {
+        if (a > k) mpz_sub_ui(r.hi.get_mpz_t(), r.lo.get_mpz_t(), 1);
+        return;
+    }
+    mpz_sub(q.get_mpz_t(), k.get_mpz_t(), a.get_mpz_t());
+    if (s > 0) {
+        mpz_fdiv_q(q.get_mpz_t(), q.get_mpz_t(), b.get_mpz_t());
+        if (q < r.hi) r.hi = q;
+    } else {
+        mpz_cdiv_q(q.get_mpz_t(), q.get_mpz_t(), b.get_mpz_t());
+        if (q > r.lo) r.lo = q;
+    }
+}
+
+void at_least(Range& r, const Affine& f, const Integer& k) {
+    Integer q;
+    at_least(r, f.a, f.b, k, q);
 }
 
 // An element in lattice coordinates: the line {axis coordinate = c}, the
@@ -329,21 +355,38 @@ struct Meeting {
     Affine t;
 };
 
-Meeting meet(const LatticeElement& e, const Run& run) {
-    Meeting m;
-    Affine along; // the coordinate along the element where the ray crosses its line
-    if (e.axis == 0) {
-        m.t = {run.dx * (e.c - run.qx.a), -run.dx * run.qx.b};
-        along = {run.qy.a + run.dy * m.t.a, run.qy.b + run.dy * m.t.b};
+struct Scratch {
+    Integer q, along_a, along_b;
+    const Integer one = 1;
+};
+
+// Fills `m` in place (see Scratch).
+void meet(const LatticeElement& e, const Run& run, Meeting& m, Scratch& s) {
+    // The coordinate normal to the element, t = d * (c - q(j)); then the
+    // coordinate along it where the ray crosses its line, q'(j) + d' * t.
+    const Affine& normal = e.axis == 0 ? run.qx : run.qy;
+    const Affine& other = e.axis == 0 ? run.qy : run.qx;
+    const int d_normal = e.axis == 0 ? run.dx : run.dy;
+    const int d_other = e.axis == 0 ? run.dy : run.dx;
+    mpz_sub(m.t.a.get_mpz_t(), e.c.get_mpz_t(), normal.a.get_mpz_t());
+    mpz_set(m.t.b.get_mpz_t(), normal.b.get_mpz_t());
+    if (d_normal < 0)
+        mpz_neg(m.t.a.get_mpz_t(), m.t.a.get_mpz_t());
+    else
+        mpz_neg(m.t.b.get_mpz_t(), m.t.b.get_mpz_t());
+    m.states.lo = 0;
+    mpz_sub_ui(m.states.hi.get_mpz_t(), run.n.get_mpz_t(), 1);
+    at_least(m.states, m.t.a, m.t.b, s.one, s.q); // nothing happens at t = 0
+    if (m.states.empty()) return;
+    if (d_other > 0) {
+        mpz_add(s.along_a.get_mpz_t(), other.a.get_mpz_t(), m.t.a.get_mpz_t());
+        mpz_add(s.along_b.get_mpz_t(), other.b.get_mpz_t(), m.t.b.get_mpz_t());
     } else {
-        m.t = {run.dy * (e.c - run.qy.a), -run.dy * run.qy.b};
-        along = {run.qx.a + run.dx * m.t.a, run.qx.b + run.dx * m.t.b};
+        mpz_sub(s.along_a.get_mpz_t(), other.a.get_mpz_t(), m.t.a.get_mpz_t());
+        mpz_sub(s.along_b.get_mpz_t(), other.b.get_mpz_t(), m.t.b.get_mpz_t());
     }
-    m.states = {0, run.n - 1};
-    at_least(m.states, m.t, 1); // nothing happens at t = 0
-    at_least(m.states, along, e.lo);
-    at_most(m.states, along, e.hi);
-    return m;
+    at_least(m.states, s.along_a, s.along_b, e.lo, s.q);
+    at_most(m.states, s.along_a, s.along_b, e.hi, s.q);
 }
 
 struct Transversal {
@@ -677,9 +720,10 @@ private:
         Integer hits = 0;
         std::optional<std::string> hit_state, miss_state;
         for (const Run& run : domain) {
-            std::vector<Meeting> meetings;
-            meetings.reserve(elements_.size());
-            for (const LatticeElement& e : elements_) meetings.push_back(meet(e, run));
+            std::vector<Meeting>& meetings = meetings_;
+            meetings.resize(elements_.size());
+            for (std::size_t e = 0; e < elements_.size(); ++e)
+                meet(elements_[e], run, meetings[e], scratch_);
             switch (piece.kind) {
             case Kind::reflect:
                 if (domain.size() != 1)
@@ -1145,6 +1189,8 @@ private:
     Integer n_, raw_x_;
     std::vector<Live> live_;
     Live final_;
+    std::vector<Meeting> meetings_; // reused for every run of every piece
+    Scratch scratch_;
 };
 
 } // namespace
