@@ -3,6 +3,8 @@
 // the reason it introduces (the message is matched, so a check that never
 // fires fails the test).
 #include "support/random_scene.hpp"
+#include "support/run_cli.hpp"
+#include "support/test_files.hpp"
 
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
@@ -972,4 +974,29 @@ TEST_CASE("brute-force induction certificates of random scenes verify", "[induct
                      << by_reason[1] << "/" << by_reason[2] << "/" << by_reason[3]
                      << "), cycle steps " << cycle_steps << ", tampered " << tampered
                      << ", rejected " << rejected);
+}
+
+// -------------------------------------------------------------------- cli --
+
+TEST_CASE("orthoray verify reads induction certificates", "[induction-certificate][cli]") {
+    using orthoray::test::quote;
+    using orthoray::test::run_cli;
+    orthoray::test::TempDir dir;
+    const std::string scene = dir.write("hallway.scene", orthoray::write_scene(hallway()));
+    const std::string good = dir.write("good.cert", hallway_certificate);
+    orthoray::test::CliResult r = run_cli("verify " + quote(scene) + " " + quote(good));
+    CHECK(r.status == 0);
+    CHECK(r.out == "valid: escape, 6 reflections\n");
+    const std::string bad =
+        dir.write("bad.cert", replace(hallway_certificate, "reflections 6", "reflections 5"));
+    r = run_cli("verify " + quote(scene) + " " + quote(bad));
+    CHECK(r.status == 1);
+    CHECK(r.out == "invalid: verdict: reflections 5, but the induction gives 6 (x's first event "
+                   "is escape at offset 5)\n");
+    const std::string malformed =
+        dir.write("malformed.cert", replace(hallway_certificate, "step top 2 0", "step top 2 x"));
+    r = run_cli("verify " + quote(scene) + " " + quote(malformed));
+    CHECK(r.status == 2);
+    CHECK(r.err.find("malformed.cert:19:12: found 'x', expected a non-negative integer") !=
+          std::string::npos);
 }
