@@ -1000,3 +1000,71 @@ TEST_CASE("orthoray verify reads induction certificates", "[induction-certificat
     CHECK(r.err.find("malformed.cert:19:12: found 'x', expected a non-negative integer") !=
           std::string::npos);
 }
+
+// ------------------------------------------------------------------ large --
+//
+// The hallway of length 2m (mirrors y = 0 and y = 1 for x in [0, 2m]) for
+// m = 10^30: 2m reflections, then escape. The same derivation as for m = 3
+// (N = 2m + 1, x is raw m - 1): rotated 0 is (1, 1), 1 .. m + 1 are (2m, 0),
+// (2m - 2, 0), ..., (0, 0), and m + 2 .. 2m are (2m - 1, 1), ..., (3, 1).
+// Pieces: [0] -> m, [1] escape -> m + 1, [2, m + 1) -> m + 2, [m + 1] -> 0,
+// [m + 2, 2m + 1) -> 1. Steps: equal 2 4 (L m + 2), equal 1 3 (L m + 1),
+// then D = piece 2 (length m - 1) beats R = piece 0 (length 1) m - 2 times
+// over S = 1: top-cycle 2 (m - 2) leaves piece 0 with r = 1 + 2 (m - 2) and
+// L = 3; equal 0 2 (r 2m - 1), equal 0 1: escape at offset 2m - 1.
+
+TEST_CASE("a hallway of length 2 * 10^30", "[induction-certificate]") {
+    const Integer m("1000000000000000000000000000000");
+    auto n = [](const Integer& v) { return v.get_str(); };
+    const Scene scene =
+        orthoray::read_scene("dim 2\nmirror y 0 x 0 " + n(2 * m) + "\nmirror y 1 x 0 " + n(2 * m) +
+                             "\nray 0 0 1 1\ntarget 3 0\n");
+    const std::string text =
+        "orthoray-certificate 1\ndim 2\npoint 0 0\npoint 1 1\nmethod induction\n"
+        "direction 1 -1\nscale 1 1\nmodulus 2\n"
+        "transversal 1 1 0 " +
+        n(2 * m) +
+        " 1 -1\n"
+        "transversal 1 0 0 " +
+        n(2 * m) +
+        " 1 1\n"
+        "first 0 " +
+        n(m - 1) +
+        "\n"
+        "piece 0 1 reflect " +
+        n(m) +
+        "\n"
+        "piece 1 1 escape " +
+        n(m + 1) +
+        "\n"
+        "piece 2 " +
+        n(m - 1) + " reflect " + n(m + 2) +
+        "\n"
+        "piece " +
+        n(m + 1) +
+        " 1 reflect 0\n"
+        "piece " +
+        n(m + 2) + " " + n(m - 1) +
+        " reflect 1\n"
+        "step equal 2 4\nstep equal 1 3\n"
+        "step top-cycle 2 " +
+        n(m - 2) +
+        "\n"
+        "step equal 0 2\nstep equal 0 1\n"
+        "answer no\nreason escape\nreflections " +
+        n(2 * m) + "\nend\n";
+    expect_valid(scene, text, "valid: escape, " + n(2 * m) + " reflections");
+    expect_invalid(scene, replace(text, "top-cycle 2 " + n(m - 2), "top-cycle 2 " + n(m - 1)),
+                   "needs M * S < l_D, but M * S = " + n(m - 1) + " * 1 = " + n(m - 1) +
+                       " >= l_D = " + n(m - 1));
+    expect_invalid(scene, replace(text, "reflections " + n(2 * m), "reflections " + n(2 * m - 1)),
+                   "reflections " + n(2 * m - 1) + ", but the induction gives " + n(2 * m));
+    // One state too many in the middle piece: the tiling breaks.
+    expect_invalid(scene, replace(text, "piece 2 " + n(m - 1), "piece 2 " + n(m)),
+                   "piece 3: it starts at " + n(m + 1) + ", but the pieces before it end at " +
+                       n(m + 2));
+    // A mirror across the hallway far away is met by one state of piece 2.
+    Scene blocked = scene;
+    blocked.add_mirror(0, Rational(m + 1), {{0, 1}});
+    expect_invalid(blocked, text, "meets the mirror x = " + n(m + 1));
+}
