@@ -11,6 +11,7 @@
 #include "engine/lattice_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
+#include "induction/induction_engine.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "shoot/bvh.hpp"
@@ -240,10 +241,19 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
     run.answer().shooter = "grid";
-    const bool tables = options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
+    // The induction engine stands on the tables and starts from state 1.
+    const bool induce =
+        ls.scene->dim == 2 &&
+        (options.engine == Engine::induction ||
+        (options.engine == Engine::automatic &&
+         (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces)));
+    const bool tables =
+        induce || options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
     if (tables) {
-        const std::uint64_t first =
-            options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
+        const std::uint64_t first = induce && options.engine == Engine::induction ? 1
+                                    : options.shooter == Shooter::pieces
+                                        ? (induce ? 1 : 0)
+                                        : grid_phase(grid.size());
         auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
             return grid.shoot(s.p, s.negative);
         };
@@ -251,9 +261,27 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         // Piece tables may grow quadratic with crossings: past 64 pieces a
         // mirror on average, stay on the grid.
         begin = std::chrono::steady_clock::now();
-        auto table = lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+        // The induction engine takes more: its cost grows with the pieces, not
+        // with the reflections.
+        const std::size_t cap = 64 * grid.size() + 1024;
+        auto table = lattice::PieceTable<Int>::build(
+            ls, grid, options.engine == Engine::induction ? std::max(cap, std::size_t{1} << 20) : cap);
         if (table && ls.target_reachable) table->mark_target(grid, run.target());
         setup.seconds += seconds_since(begin);
+        if (table && induce) {
+            induction::Decision decision =
+                induction::decide(ls, grid, *table, options, run.reflections());
+            if (decision.answer) {
+                decision.answer->setup = setup;
+                decision.answer->setup.pieces = table->size();
+                return *decision.answer;
+            }
+            if (decision.limit) {
+                run.stop(*decision.limit);
+                return run.answer();
+            }
+            // The answer needs more reflections than max_steps: simulate up to it.
+        }
         if (table) {
             setup.pieces = table->size();
             run.answer().shooter = "pieces";
