@@ -30,10 +30,10 @@ struct SolveArgs {
 };
 
 const std::map<std::string, Engine> engines{{"auto", Engine::automatic},
-                                           {"lattice", Engine::lattice},
-                                           {"induction", Engine::induction},
-                                           {"reference", Engine::reference},
-                                           {"graph", Engine::graph}};
+                                            {"lattice", Engine::lattice},
+                                            {"induction", Engine::induction},
+                                            {"reference", Engine::reference},
+                                            {"graph", Engine::graph}};
 const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetector::first_state},
                                                      {"brent", CycleDetector::brent}};
 const std::map<std::string, Arithmetic> arithmetics{

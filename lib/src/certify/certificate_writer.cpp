@@ -31,8 +31,8 @@ public:
             statement("transversal",
                       {std::to_string(t.axis), t.offset.get_str(), t.lo.get_str(), t.hi.get_str(),
                        (t.negative & 1u) ? "-1" : "1", (t.negative & 2u) ? "-1" : "1"});
-        statement("first", {std::to_string(exchange.first_transversal),
-                            exchange.first_index.get_str()});
+        statement("first",
+                  {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
         for (const induction::ExchangePiece& p : exchange.pieces) {
             const char* kind = p.kind == induction::PieceKind::reflect  ? "reflect"
                                : p.kind == induction::PieceKind::escape ? "escape"
@@ -41,7 +41,8 @@ public:
                 statement("piece",
                           {p.start.get_str(), p.length.get_str(), kind, p.image.get_str(), "hit"});
             else
-                statement("piece", {p.start.get_str(), p.length.get_str(), kind, p.image.get_str()});
+                statement("piece",
+                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str()});
         }
     }
     void top(std::size_t d, std::size_t r) override { step("top", d, std::to_string(r)); }

@@ -245,15 +245,14 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     const bool induce =
         ls.scene->dim == 2 &&
         (options.engine == Engine::induction ||
-        (options.engine == Engine::automatic &&
-         (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces)));
+         (options.engine == Engine::automatic &&
+          (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces)));
     const bool tables =
         induce || options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
     if (tables) {
         const std::uint64_t first = induce && options.engine == Engine::induction ? 1
-                                    : options.shooter == Shooter::pieces
-                                        ? (induce ? 1 : 0)
-                                        : grid_phase(grid.size());
+                                    : options.shooter == Shooter::pieces          ? (induce ? 1 : 0)
+                                                                         : grid_phase(grid.size());
         auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
             return grid.shoot(s.p, s.negative);
         };
@@ -265,7 +264,8 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         // with the reflections.
         const std::size_t cap = 64 * grid.size() + 1024;
         auto table = lattice::PieceTable<Int>::build(
-            ls, grid, options.engine == Engine::induction ? std::max(cap, std::size_t{1} << 20) : cap);
+            ls, grid,
+            options.engine == Engine::induction ? std::max(cap, std::size_t{1} << 20) : cap);
         if (table && ls.target_reachable) table->mark_target(grid, run.target());
         setup.seconds += seconds_since(begin);
         if (table && induce) {

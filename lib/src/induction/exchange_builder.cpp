@@ -7,7 +7,9 @@ namespace {
 
 constexpr std::size_t npos = ~std::size_t{0};
 
-int sign_of(unsigned negative, int axis) { return ((negative >> axis) & 1u) ? -1 : 1; }
+int sign_of(unsigned negative, int axis) {
+    return ((negative >> axis) & 1u) ? -1 : 1;
+}
 
 // w = slope * u + intercept on the line {axis = offset}, direction `negative`.
 int w_slope(int axis, unsigned negative) {
@@ -35,7 +37,8 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
         const int axis = element.axis;
         mirrors.push_back({axis, element.lo[axis], element.lo[1 - axis], element.hi[1 - axis], e});
         // A reflection on {axis = c} moves w by +-2c, so w mod gcd(2c) is invariant.
-        mpz_gcd(modulus_.get_mpz_t(), modulus_.get_mpz_t(), Integer(2 * element.lo[axis]).get_mpz_t());
+        mpz_gcd(modulus_.get_mpz_t(), modulus_.get_mpz_t(),
+                Integer(2 * element.lo[axis]).get_mpz_t());
     }
     w_first_ = sign_of(x_negative, 1) * x[1] - sign_of(x_negative, 0) * x[0];
     std::sort(mirrors.begin(), mirrors.end(), [](const Mirror& a, const Mirror& b) {
@@ -139,11 +142,10 @@ std::optional<std::pair<std::size_t, Integer>> ExchangeLayout::locate(const Inte
     for (int axis = 0; axis < 2; ++axis) {
         const Integer& offset = p[axis];
         const Integer& u = p[1 - axis];
-        auto after = std::upper_bound(segments_.begin(), segments_.end(), 0,
-                                      [&](int, const Segment& s) {
-                                          return std::tie(axis, offset, u) <
-                                                 std::tie(s.axis, s.offset, s.lo);
-                                      });
+        auto after =
+            std::upper_bound(segments_.begin(), segments_.end(), 0, [&](int, const Segment& s) {
+                return std::tie(axis, offset, u) < std::tie(s.axis, s.offset, s.lo);
+            });
         if (after == segments_.begin()) continue;
         const Segment& s = *(after - 1);
         if (s.axis != axis || s.offset != offset || u > s.hi) continue;

@@ -74,10 +74,10 @@ private:
         int axis;
         Integer offset, lo, hi;
     };
-    std::vector<Segment> segments_;               // sorted by (axis, offset, lo)
-    std::vector<std::vector<Owner>> owners_;      // per segment
-    std::vector<std::size_t> transversal_of_;     // segment * 4 + direction -> id or npos
-    std::vector<std::size_t> segment_of_;         // per transversal
+    std::vector<Segment> segments_;           // sorted by (axis, offset, lo)
+    std::vector<std::vector<Owner>> owners_;  // per segment
+    std::vector<std::size_t> transversal_of_; // segment * 4 + direction -> id or npos
+    std::vector<std::size_t> segment_of_;     // per transversal
     std::vector<Transversal> transversals_;
     Integer modulus_, w_first_, size_;
 };
@@ -99,14 +99,12 @@ struct RawPiece {
 // Steps 3-5 on raw pieces that tile [0, N): split out x and the hit states,
 // close the holes, rotate.
 IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> pieces,
-                                 const Integer& raw_first,
-                                 const std::vector<Integer>& raw_hits);
+                                 const Integer& raw_first, const std::vector<Integer>& raw_hits);
 
 template <class Int>
-IntervalExchange build_exchange(const lattice::LatticeScene& scene,
-                                const lattice::UniformGrid<Int, 2>& grid,
-                                const lattice::PieceTable<Int>& table, const Integer (&x)[2],
-                                unsigned x_negative) {
+IntervalExchange
+build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<Int, 2>& grid,
+               const lattice::PieceTable<Int>& table, const Integer (&x)[2], unsigned x_negative) {
     using lattice::to_integer;
     ExchangeLayout layout(scene, x, x_negative);
     const Integer& g = layout.modulus();
@@ -125,6 +123,36 @@ IntervalExchange build_exchange(const lattice::LatticeScene& scene,
         return *located;
     };
 
+    using Kind = typename lattice::PieceTable<Int>::Kind;
+    // The states of transversal t at positions first .. last (in the
+    // class) all follow `piece`: one raw piece.
+    auto add = [&](const Transversal& t, const Integer& first, const Integer& last,
+                   const typename lattice::PieceTable<Int>::Piece& table_piece) {
+        const Integer a = number_of(t, g, first);
+        const Integer b = number_of(t, g, last);
+        RawPiece piece;
+        piece.start = t.start + std::min(a, b);
+        piece.length = abs(b - a) + 1;
+        switch (table_piece.kind()) {
+        case Kind::escape:
+            piece.kind = PieceKind::escape;
+            break;
+        case Kind::absorb:
+            piece.kind = PieceKind::absorbed;
+            break;
+        case Kind::reflect: {
+            const auto ia = image_of(t, first, table_piece);
+            const auto ib = image_of(t, last, table_piece);
+            // A translation: same transversal, numbers in the same order.
+            if (ia.first != ib.first || ib.second - ia.second != b - a)
+                throw std::logic_error("a piece of the tables is not a translation in w");
+            piece.image = layout.raw(ia.second < ib.second ? ia : ib);
+            break;
+        }
+        }
+        raw.push_back(std::move(piece));
+    };
+
     for (std::size_t id = 0; id < layout.transversals().size(); ++id) {
         const Transversal& t = layout.transversals()[id];
         for (const auto& owner : layout.owners(id)) {
@@ -138,30 +166,16 @@ IntervalExchange build_exchange(const lattice::LatticeScene& scene,
                 if (lo > hi) continue;
                 const auto range = class_range(t, g, lo, hi);
                 if (!range) continue;
-                const Integer a = number_of(t, g, range->first);
-                const Integer b = number_of(t, g, range->second);
-                RawPiece piece;
-                piece.start = t.start + std::min(a, b);
-                piece.length = abs(b - a) + 1;
-                using Kind = typename lattice::PieceTable<Int>::Kind;
-                switch (pieces[i].kind()) {
-                case Kind::escape:
-                    piece.kind = PieceKind::escape;
-                    break;
-                case Kind::absorb:
-                    piece.kind = PieceKind::absorbed;
-                    break;
-                case Kind::reflect: {
-                    const auto ia = image_of(t, range->first, pieces[i]);
-                    const auto ib = image_of(t, range->second, pieces[i]);
-                    // A translation: same transversal, numbers in the same order.
-                    if (ia.first != ib.first || ib.second - ia.second != b - a)
-                        throw std::logic_error("a piece of the tables is not a translation in w");
-                    piece.image = layout.raw(ia.second < ib.second ? ia : ib);
-                    break;
+                // A corner negates w, so a run of corners (mirrors crossing
+                // a line at consecutive lattice points) is no translation:
+                // each of its states, one per crossing, is a piece of its own.
+                if (pieces[i].kind() == Kind::reflect && pieces[i].flip == 3u &&
+                    range->first != range->second) {
+                    for (Integer u = range->first; u <= range->second; u += g)
+                        add(t, u, u, pieces[i]);
+                } else {
+                    add(t, range->first, range->second, pieces[i]);
                 }
-                }
-                raw.push_back(std::move(piece));
             }
         }
     }
@@ -176,8 +190,8 @@ IntervalExchange build_exchange(const lattice::LatticeScene& scene,
             if (back.escape || back.flip == 0) continue;
             Integer q[2];
             for (int j = 0; j < 2; ++j)
-                q[j] = scene.target[j] + (((d >> j) & 1u) ? to_integer(back.t)
-                                                           : Integer(-to_integer(back.t)));
+                q[j] = scene.target[j] +
+                       (((d >> j) & 1u) ? to_integer(back.t) : Integer(-to_integer(back.t)));
             if (const auto at = layout.locate(q, d)) hits.push_back(layout.raw(*at));
         }
     }

@@ -9,7 +9,8 @@
 //
 // is constant along a segment, and a reflection on the line X = c adds
 // 2 * DX * c, one on Y = c subtracts 2 * DY * c: in w the step map is a pure
-// translation (a corner, which negates w, only ever maps a single state).
+// translation. (A corner negates w; the builder gives each state that runs
+// into a corner a piece of its own.)
 // So every state of one orbit has w in one class modulo G = gcd(2c) over
 // the mirror offsets c, and numbering the states of a line segment in that
 // class by increasing w turns each piece of the piece tables into a
@@ -28,7 +29,7 @@ namespace orthoray::induction {
 // {coordinate axis = offset} x [lo, hi] whose w lies in the orbit's class,
 // numbered 0 .. count - 1 by increasing w.
 struct Transversal {
-    int axis = 0;          // 0: the line X = offset, 1: the line Y = offset
+    int axis = 0; // 0: the line X = offset, 1: the line Y = offset
     Integer offset, lo, hi;
     unsigned negative = 0; // direction bits: bit j set moves towards -infinity on axis j
     Integer first, count;  // the least position in the class, and how many there are
@@ -50,8 +51,8 @@ struct ExchangePiece {
 };
 
 struct IntervalExchange {
-    Integer scale[2];     // lattice = scene coordinate * scale, per axis
-    Integer modulus;      // G (0: w itself is invariant)
+    Integer scale[2]; // lattice = scene coordinate * scale, per axis
+    Integer modulus;  // G (0: w itself is invariant)
     std::vector<Transversal> transversals;
     std::size_t first_transversal = 0; // x, the state after reflection 1:
     Integer first_index;               // its transversal and number there
