@@ -180,12 +180,17 @@ build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<In
         }
     }
 
-    // The states whose segment passes the target: shoot back from it.
+    // The states whose segment passes the target: shoot back from it. (The
+    // states at the target itself never matter, since the ray passes it on
+    // arriving there, but the marks are exact.)
     std::vector<Integer> hits;
     if (scene.target_reachable) {
         Int p[2];
         for (int j = 0; j < 2; ++j) p[j] = lattice::from_integer<Int>(scene.target[j]);
+        const Integer target[2] = {scene.target[0], scene.target[1]};
         for (unsigned d = 0; d < 4; ++d) {
+            // A segment also passes its own first point: states on the target.
+            if (const auto at = layout.locate(target, d)) hits.push_back(layout.raw(*at));
             const lattice::Shot<Int> back = grid.shoot(p, d ^ 3u);
             if (back.escape || back.flip == 0) continue;
             Integer q[2];
