@@ -148,6 +148,10 @@ void CertificateWriter::finish(const Answer& answer) {
             statement("period") << (json ? "\"" + reflections + "\"" : " " + reflections);
             end_statement();
         }
+        if (answer.reason == Reason::limit) { // stopped while the steps were written
+            statement("partial") << (json ? "true" : "");
+            end_statement();
+        }
         out_ << (json ? "}\n{\"end\": true}\n" : "end\n");
         out_.flush();
         return;
