@@ -26,11 +26,14 @@ struct SolveArgs {
     bool json = false, quiet = false;
     std::uint64_t max_steps = 0, max_memory = 0;
     double timeout = 0;
-    std::string engine = "lattice", detector = "first-state", arithmetic = "auto", shooter = "auto";
+    std::string engine = "auto", detector = "first-state", arithmetic = "auto", shooter = "auto";
 };
 
-const std::map<std::string, Engine> engines{
-    {"lattice", Engine::lattice}, {"reference", Engine::reference}, {"graph", Engine::graph}};
+const std::map<std::string, Engine> engines{{"auto", Engine::automatic},
+                                            {"lattice", Engine::lattice},
+                                            {"induction", Engine::induction},
+                                            {"reference", Engine::reference},
+                                            {"graph", Engine::graph}};
 const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetector::first_state},
                                                      {"brent", CycleDetector::brent}};
 const std::map<std::string, Arithmetic> arithmetics{
@@ -65,6 +68,12 @@ void print_json(const Answer& a, double seconds) {
         std::cout << ",\"shooter\":" << nlohmann::json(a.shooter).dump()
                   << ",\"setup_seconds\":" << nlohmann::json(a.setup.seconds).dump()
                   << ",\"grid_cells\":" << a.setup.cells << ",\"pieces\":" << a.setup.pieces;
+    if (a.engine == "induction")
+        std::cout << ",\"exchange_pieces\":" << a.induction.pieces
+                  << ",\"exchange_states\":" << a.induction.states.get_str()
+                  << ",\"induction_steps\":" << a.induction.steps
+                  << ",\"induction_rounds\":" << a.induction.rounds
+                  << ",\"induction_seconds\":" << nlohmann::json(a.induction.seconds).dump();
     std::cout << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
 }
 
@@ -91,6 +100,10 @@ void print_text(const Answer& a, double seconds) {
                 a.reflections.get_str().c_str());
     std::printf("engine       %s (%s%s%s)\n", a.engine.c_str(), a.arithmetic.c_str(),
                 a.shooter.empty() ? "" : ", ", a.shooter.c_str());
+    if (a.engine == "induction")
+        std::printf("induction    %llu steps on %zu pieces, %s states\n",
+                    static_cast<unsigned long long>(a.induction.steps), a.induction.pieces,
+                    a.induction.states.get_str().c_str());
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
@@ -220,9 +233,12 @@ Command add_solve(CLI::App& app) {
     cmd->add_flag("--quiet", args->quiet,
                   "no progress line (it is shown on long runs only when stderr is a terminal)");
     cmd->add_option("--engine", args->engine,
-                    "lattice (default: integer lattice states, exact uniform grid), reference "
-                    "(naive rational O(n) scan per reflection, the test oracle), graph (explicit "
-                    "state graph; small scenes only)")
+                    "auto (default: simulate; in 2D, switch to induction once a short run has "
+                    "not answered), lattice (simulation on integer lattice states), induction "
+                    "(2D: Rauzy-Zorich induction on the piece tables, time polynomial in the "
+                    "input size; other dimensions are simulated), reference (naive rational O(n) "
+                    "scan per reflection, the test oracle), graph (explicit state graph; small "
+                    "scenes only)")
         ->check(CLI::IsMember(names(engines)));
     cmd->add_option("--cycle-detector", args->detector,
                     "first-state (default: compare with the state after reflection 1) or brent "

@@ -560,9 +560,65 @@ TEST_CASE("solve on generated long orbits gives the closed-form answer", "[cli]"
         std::istringstream expect(text.substr(at + 10, text.find('\n', at) - at - 10));
         std::string answer, reason, count;
         expect >> answer >> reason >> count;
-        const nlohmann::json j = parse_json(run_cli("solve --json " + quote(scene)).out);
-        CHECK(j["answer"] == answer);
-        CHECK(j["reason"] == reason);
-        CHECK(j[reason == "cycle" ? "period" : "reflections"].dump() == count);
+        // Simulation on its own (chunks, then tables), the default (which
+        // induces once the grid phase is over) and induction from the start.
+        for (const std::string engine : {"lattice", "auto", "induction"}) {
+            INFO("engine " << engine);
+            const nlohmann::json j =
+                parse_json(run_cli("solve --json --engine " + engine + " " + quote(scene)).out);
+            CHECK(j["answer"] == answer);
+            CHECK(j["reason"] == reason);
+            CHECK(j[reason == "cycle" ? "period" : "reflections"].dump() == count);
+        }
+    }
+}
+
+TEST_CASE("solve --engine induction reports the exchange it decided on", "[cli][induction]") {
+    const nlohmann::json j =
+        parse_json(run_cli("solve --json --engine induction " + quote(instance(box_corner))).out);
+    CHECK(j["answer"] == "yes");
+    CHECK(j["reflections"] == 6);
+    CHECK(j["engine"] == "induction");
+    CHECK(j["exchange_pieces"] == 26);
+    CHECK(j["exchange_states"] == 32);
+    CHECK(j["induction_steps"] == 25);
+    CHECK(j["induction_seconds"].is_number());
+    // The text summary names the engine and its steps.
+    const CliResult text = run_cli("solve --engine induction " + quote(instance(box_corner)));
+    CHECK(text.out.find("induction    25 steps on 26 pieces, 32 states") != std::string::npos);
+}
+
+TEST_CASE("the default engine answers a 2^61 box by induction, in full", "[cli][induction]") {
+    // (2^61 + 1) x 2^61 from a corner: 2^62 - 1 reflections, beyond any simulation.
+    TempDir dir;
+    const std::string scene = dir.path("big.scene");
+    REQUIRE(
+        run_cli("generate box --sides 2305843009213693953 2305843009213693952 -o " + quote(scene))
+            .status == 0);
+    const CliResult r = run_cli("solve --json " + quote(scene));
+    CHECK(r.status == 0);
+    const nlohmann::json j = parse_json(r.out);
+    CHECK(j["engine"] == "induction");
+    CHECK(j["reflections"].dump() == "4611686018427387903");
+}
+
+TEST_CASE("--max-steps holds for the induction engine too", "[cli][induction]") {
+    // 65,535 reflections are needed; the induction knows at once, and the
+    // limit then stops a simulation at exactly 1,000, as without induction.
+    TempDir dir;
+    const std::string scene = dir.path("long.scene");
+    REQUIRE(run_cli("generate coprime-box --k 15 -o " + quote(scene)).status == 0);
+    for (const std::string engine : {"auto", "induction"}) {
+        INFO(engine);
+        const CliResult r =
+            run_cli("solve --json --engine " + engine + " --max-steps 1000 " + quote(scene));
+        CHECK(r.status == 3);
+        const nlohmann::json j = parse_json(r.out);
+        CHECK(j["limit"] == "steps");
+        CHECK(j["reflections"] == 1000);
+        const CliResult enough =
+            run_cli("solve --json --engine " + engine + " --max-steps 65535 " + quote(scene));
+        CHECK(enough.status == 0);
+        CHECK(parse_json(enough.out)["reflections"] == 65535);
     }
 }

@@ -1,6 +1,7 @@
-// libFuzzer target: solve and verify small parsed scenes. The default engine
-// and the reference tracer, both capped at 300 reflections, must agree; the
-// default engine's certificate must verify exactly when it answered.
+// libFuzzer target: solve and verify small parsed scenes. The default engine,
+// the piece tables, the induction engine and the reference tracer, all
+// capped at 300 reflections, must agree; the default engine's certificate
+// must verify exactly when it answered.
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
@@ -47,6 +48,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     tables.monitor = &watcher;
     const orthoray::Answer stepped = orthoray::solve(scene, tables);
     if (stepped.reason != slow.reason || stepped.reflections != slow.reflections) std::abort();
+
+    // The induction engine, with the same cap (it reports a limit when the
+    // answer needs more reflections): the same answer once more.
+    orthoray::SolveOptions induction;
+    induction.max_steps = 300;
+    induction.engine = orthoray::Engine::induction;
+    const orthoray::Answer induced = orthoray::solve(scene, induction);
+    if (induced.reason != slow.reason || induced.reflections != slow.reflections) std::abort();
 
     std::istringstream in(certificate.str());
     const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "fuzz");

@@ -39,7 +39,7 @@ Scene random_scene(std::mt19937_64& rng, const RandomSceneShape& shape) {
         while (a == b) b = coordinate(rng, shape);
         return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
     };
-    if (chance(rng, 0.4)) {
+    if (chance(rng, shape.box_chance)) {
         // An enclosing box [-R-1, R+1]^d; sometimes one face absorbs or has a gap.
         Rational r = shape.range + 1;
         int special_face = chance(rng, 0.3) ? uniform(rng, 0, 2 * d - 1) : -1;

@@ -4,6 +4,7 @@
 #include "orthoray/number.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace orthoray {
@@ -22,7 +23,7 @@ struct Answer {
     // escape/absorbed: reflections before it leaves or stops; cycle: the
     // period (reflections in one period); limit: reflections performed.
     Integer reflections;
-    std::string engine; // which engine decided it ("lattice", "reference", "graph")
+    std::string engine; // which engine decided it ("lattice", "induction", "reference", "graph")
     std::string
         arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
     Limit limit = Limit::steps; // which limit, when reason is Reason::limit
@@ -35,6 +36,15 @@ struct Answer {
         std::size_t cells = 0;  // uniform grid cells
         std::size_t pieces = 0; // piece-table pieces (0 when none were built)
     } setup;
+
+    // What the induction engine did, when it decided (docs/induction.md).
+    struct Induction {
+        std::size_t pieces = 0;   // pieces of the interval exchange
+        Integer states;           // states it permutes
+        std::uint64_t steps = 0;  // induction steps, an accelerated one counting once
+        std::uint64_t rounds = 0; // of which accelerated
+        double seconds = 0;       // building the exchange and inducing
+    } induction;
 
     bool yes() const { return reason == Reason::hit; }
     bool decided() const { return reason != Reason::limit; }

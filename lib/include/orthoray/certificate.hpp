@@ -7,6 +7,7 @@
 #include "orthoray/solve.hpp"
 
 #include <istream>
+#include <memory>
 #include <ostream>
 #include <string>
 
@@ -23,10 +24,15 @@ class CertificateWriter : public PathSink {
 public:
     CertificateWriter(std::ostream& out, const Scene& scene,
                       CertificateFormat format = CertificateFormat::text);
+    ~CertificateWriter() override;
     void visit(const Vector& point, const Vector& direction) override;
+    // The induction engine records its exchange and steps through this
+    // (docs/induction-certificates.md); the points so far are their prefix.
+    induction::ExchangeRecorder* exchange_recorder() override;
     void finish(const Answer& answer);
 
 private:
+    class InductionSection;
     void write_vector(const Vector& x);
 
     std::ostream& out_;
@@ -35,6 +41,7 @@ private:
     std::uint64_t visits_ = 0;
     Vector first_reflection_point_, first_reflection_direction_;
     Vector last_direction_;
+    std::unique_ptr<InductionSection> induction_; // once the induction engine records
 };
 
 struct Verdict {

@@ -11,7 +11,10 @@
 namespace orthoray {
 
 enum class Engine {
-    lattice,   // default: integer lattice states and an exact uniform grid
+    automatic, // default: lattice simulation; in 2D, induction once a short run has not answered
+    lattice,   // simulation on integer lattice states with exact next-hit queries
+    induction, // 2D: Rauzy-Zorich induction on the piece tables' interval exchange
+               // (docs/induction.md); other dimensions are simulated
     reference, // naive O(n)-per-reflection scan in rationals: the test oracle
     graph,     // explicit state graph of every lattice state (small scenes only)
 };
@@ -45,10 +48,17 @@ enum class Shooter {
 // Receives the trajectory as it is computed: first the start point, then
 // every reflection point, then (for absorbed) the absorption point, each with
 // the direction the ray leaves it in. Used to stream certificates.
+namespace induction {
+class ExchangeRecorder;
+}
+
 class PathSink {
 public:
     virtual ~PathSink() = default;
     virtual void visit(const Vector& point, const Vector& direction) = 0;
+    // A sink that can also record an induction certificate (the exchange and
+    // its steps) offers a recorder; the path so far is then its prefix.
+    virtual induction::ExchangeRecorder* exchange_recorder() { return nullptr; }
 };
 
 // A PathSink that keeps everything it is given. Its memory grows with the
@@ -75,7 +85,7 @@ public:
 };
 
 struct SolveOptions {
-    Engine engine = Engine::lattice;
+    Engine engine = Engine::automatic;
     CycleDetector cycle_detector = CycleDetector::first_state;
     Arithmetic arithmetic = Arithmetic::automatic;
     Shooter shooter = Shooter::automatic;

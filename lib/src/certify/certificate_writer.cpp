@@ -5,7 +5,83 @@
 // and an end line; numbers are strings, so nothing is rounded.
 #include "orthoray/certificate.hpp"
 
+#include "induction/induction_engine.hpp"
+
+#include <initializer_list>
+#include <string>
+
 namespace orthoray {
+
+// The induction part of a certificate: one statement a line, in text or as
+// a JSON object {"keyword": [operands]}.
+class CertificateWriter::InductionSection : public induction::ExchangeRecorder {
+public:
+    InductionSection(CertificateWriter& writer) : writer_(writer) {}
+
+    void begin(const induction::IntervalExchange& exchange) override {
+        statement("method", {"induction"}, false);
+        std::ostream& out = writer_.out_;
+        const bool json = writer_.format_ == CertificateFormat::jsonl;
+        out << (json ? "{\"direction\": " : "direction");
+        writer_.write_vector(writer_.first_reflection_direction_);
+        out << (json ? "}\n" : "\n");
+        statement("scale", {exchange.scale[0].get_str(), exchange.scale[1].get_str()});
+        statement("modulus", {exchange.modulus.get_str()}, false);
+        for (const induction::Transversal& t : exchange.transversals)
+            statement("transversal",
+                      {std::to_string(t.axis), t.offset.get_str(), t.lo.get_str(), t.hi.get_str(),
+                       (t.negative & 1u) ? "-1" : "1", (t.negative & 2u) ? "-1" : "1"});
+        statement("first",
+                  {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
+        for (const induction::ExchangePiece& p : exchange.pieces) {
+            const char* kind = p.kind == induction::PieceKind::reflect  ? "reflect"
+                               : p.kind == induction::PieceKind::escape ? "escape"
+                                                                        : "absorbed";
+            if (p.hit)
+                statement("piece",
+                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str(), "hit"});
+            else
+                statement("piece",
+                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str()});
+        }
+    }
+    void top(std::size_t d, std::size_t r) override { step("top", d, std::to_string(r)); }
+    void bottom(std::size_t r, std::size_t d) override { step("bottom", r, std::to_string(d)); }
+    void equal(std::size_t r, std::size_t d) override { step("equal", r, std::to_string(d)); }
+    void invariant(std::size_t d) override { statement("step", {"invariant", std::to_string(d)}); }
+    void top_cycle(std::size_t d, const Integer& rounds) override {
+        step("top-cycle", d, rounds.get_str());
+    }
+    void bottom_cycle(std::size_t r, const Integer& rounds) override {
+        step("bottom-cycle", r, rounds.get_str());
+    }
+
+private:
+    void step(const char* kind, std::size_t a, const std::string& b) {
+        statement("step", {kind, std::to_string(a), b});
+    }
+    // `keyword operands...`; in JSON a single operand is a scalar unless
+    // `array` asks for a list.
+    void statement(const char* keyword, std::initializer_list<std::string> operands,
+                   bool array = true) {
+        std::ostream& out = writer_.out_;
+        if (writer_.format_ == CertificateFormat::text) {
+            out << keyword;
+            for (const std::string& x : operands) out << ' ' << x;
+            out << '\n';
+            return;
+        }
+        out << "{\"" << keyword << "\": " << (array ? "[" : "");
+        bool first = true;
+        for (const std::string& x : operands) {
+            out << (first ? "\"" : ", \"") << x << '"';
+            first = false;
+        }
+        out << (array ? "]}\n" : "}\n");
+    }
+
+    CertificateWriter& writer_;
+};
 
 CertificateWriter::CertificateWriter(std::ostream& out, const Scene& scene,
                                      CertificateFormat format)
@@ -27,6 +103,13 @@ void CertificateWriter::write_vector(const Vector& x) {
             out_ << ' ' << to_string(x[j]);
     }
     if (json) out_ << ']';
+}
+
+CertificateWriter::~CertificateWriter() = default;
+
+induction::ExchangeRecorder* CertificateWriter::exchange_recorder() {
+    if (!induction_) induction_ = std::make_unique<InductionSection>(*this);
+    return induction_.get();
 }
 
 void CertificateWriter::visit(const Vector& point, const Vector& direction) {
@@ -58,6 +141,21 @@ void CertificateWriter::finish(const Answer& answer) {
     else
         out_ << "answer " << answer_word(answer) << "\nreason " << to_string(answer.reason)
              << "\nreflections " << reflections << '\n';
+    if (induction_) {
+        // The exchange already says where x is: the verdict is the answer,
+        // plus the period of a cycle.
+        if (answer.reason == Reason::cycle) {
+            statement("period") << (json ? "\"" + reflections + "\"" : " " + reflections);
+            end_statement();
+        }
+        if (answer.reason == Reason::limit) { // stopped while the steps were written
+            statement("partial") << (json ? "true" : "");
+            end_statement();
+        }
+        out_ << (json ? "}\n{\"end\": true}\n" : "end\n");
+        out_.flush();
+        return;
+    }
     switch (answer.reason) {
     case Reason::hit:
         statement("target");

@@ -11,6 +11,7 @@
 #include "engine/lattice_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
+#include "induction/induction_engine.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "shoot/bvh.hpp"
@@ -36,6 +37,16 @@ std::uint64_t grid_phase(std::size_t elements) {
     return std::max<std::uint64_t>(std::uint64_t{1} << 14, 64 * std::uint64_t{elements});
 }
 constexpr std::uint32_t no_mirror = ~std::uint32_t{0};
+
+// Reflections on the piece tables worth at most about one induction on
+// them. An induction takes about k log2 N steps (k pieces, N states, log2 N
+// about the coordinates' bits) of some 250 ns; a table step takes 20 ns on
+// int64 and up to 60 ns on wider integers (bench/RESULTS.md), so
+// 2 k log2 N reflections cost a quarter to half an induction.
+std::uint64_t induction_budget(std::size_t pieces, const Integer& magnitude) {
+    const std::uint64_t bits = mpz_sizeinbase(magnitude.get_mpz_t(), 2) + 8;
+    return 2 * std::uint64_t{pieces} * bits;
+}
 
 template <class Int, int M>
 struct State {
@@ -240,10 +251,18 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
     run.answer().shooter = "grid";
-    const bool tables = options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
+    // The induction engine stands on the tables and starts from state 1.
+    const bool induce =
+        ls.scene->dim == 2 &&
+        (options.engine == Engine::induction ||
+         (options.engine == Engine::automatic &&
+          (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces)));
+    const bool tables =
+        induce || options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
     if (tables) {
-        const std::uint64_t first =
-            options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
+        const std::uint64_t first = induce && options.engine == Engine::induction ? 1
+                                    : options.shooter == Shooter::pieces          ? (induce ? 1 : 0)
+                                                                         : grid_phase(grid.size());
         auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
             return grid.shoot(s.p, s.negative);
         };
@@ -251,7 +270,12 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         // Piece tables may grow quadratic with crossings: past 64 pieces a
         // mirror on average, stay on the grid.
         begin = std::chrono::steady_clock::now();
-        auto table = lattice::PieceTable<Int>::build(ls, grid, 64 * grid.size() + 1024);
+        // The induction engine takes more: its cost grows with the pieces, not
+        // with the reflections.
+        const std::size_t cap = 64 * grid.size() + 1024;
+        auto table = lattice::PieceTable<Int>::build(
+            ls, grid,
+            options.engine == Engine::induction ? std::max(cap, std::size_t{1} << 20) : cap);
         if (table && ls.target_reachable) table->mark_target(grid, run.target());
         setup.seconds += seconds_since(begin);
         if (table) {
@@ -260,16 +284,36 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
             // Until the ray first reflects, the tables cannot say where it is.
             bool placed = false;
             typename lattice::PieceTable<Int>::Cursor where;
-            run.advance_in_chunks(
-                [&](const State<Int, M>& s, std::uint32_t mirror) {
-                    if (!placed) {
-                        if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
-                        where = table->at(mirror, s.negative);
-                        placed = true;
-                    }
-                    return table->shoot(s.p, where);
-                },
-                ~std::uint64_t{0});
+            auto by_table = [&](const State<Int, M>& s, std::uint32_t mirror) {
+                if (!placed) {
+                    if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
+                    where = table->at(mirror, s.negative);
+                    placed = true;
+                }
+                return table->shoot(s.p, where);
+            };
+            if (induce) {
+                // Auto: step on the tables about as long as inducing would
+                // take, then induce; no answer costs more than twice the
+                // faster engine's time.
+                const std::uint64_t budget = options.engine == Engine::induction
+                                                 ? 0
+                                                 : induction_budget(table->size(), ls.magnitude);
+                if (run.advance_in_chunks(by_table, run.reflections() + budget))
+                    return run.answer();
+                induction::Decision decision =
+                    induction::decide(ls, grid, *table, options, run.reflections());
+                if (decision.answer) {
+                    decision.answer->setup = setup;
+                    return *decision.answer;
+                }
+                if (decision.limit) {
+                    run.stop(*decision.limit);
+                    return run.answer();
+                }
+                // The answer needs more reflections than max_steps: simulate up to it.
+            }
+            run.advance_in_chunks(by_table, ~std::uint64_t{0});
             return run.answer();
         }
     }

@@ -50,7 +50,9 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
         return engine::solve_by_reference(scene, options);
     case Engine::graph:
         return solve_by_graph(scene, options);
+    case Engine::automatic:
     case Engine::lattice:
+    case Engine::induction:
         break;
     }
     return engine::solve_on_lattice(scene, options);

@@ -1,0 +1,295 @@
+#include "induction/exchange_builder.hpp"
+
+#include <numeric>
+
+namespace orthoray::induction {
+namespace {
+
+constexpr std::size_t npos = ~std::size_t{0};
+
+int sign_of(unsigned negative, int axis) {
+    return ((negative >> axis) & 1u) ? -1 : 1;
+}
+
+// w = slope * u + intercept on the line {axis = offset}, direction `negative`.
+int w_slope(int axis, unsigned negative) {
+    return axis == 0 ? sign_of(negative, 1) : -sign_of(negative, 0);
+}
+Integer w_intercept(int axis, const Integer& offset, unsigned negative) {
+    return axis == 0 ? Integer(-sign_of(negative, 0) * offset)
+                     : Integer(sign_of(negative, 1) * offset);
+}
+
+} // namespace
+
+ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer (&x)[2],
+                               unsigned x_negative) {
+    struct Mirror {
+        int axis;
+        Integer offset, lo, hi;
+        std::uint32_t element;
+    };
+    std::vector<Mirror> mirrors;
+    modulus_ = 0;
+    for (std::uint32_t e = 0; e < scene.elements.size(); ++e) {
+        const auto& element = scene.elements[e];
+        if (element.absorber) continue;
+        const int axis = element.axis;
+        mirrors.push_back({axis, element.lo[axis], element.lo[1 - axis], element.hi[1 - axis], e});
+        // A reflection on {axis = c} moves w by +-2c, so w mod gcd(2c) is invariant.
+        mpz_gcd(modulus_.get_mpz_t(), modulus_.get_mpz_t(),
+                Integer(2 * element.lo[axis]).get_mpz_t());
+    }
+    w_first_ = sign_of(x_negative, 1) * x[1] - sign_of(x_negative, 0) * x[0];
+    std::sort(mirrors.begin(), mirrors.end(), [](const Mirror& a, const Mirror& b) {
+        return std::tie(a.axis, a.offset, a.lo) < std::tie(b.axis, b.offset, b.lo);
+    });
+    const std::size_t verticals = static_cast<std::size_t>(
+        std::find_if(mirrors.begin(), mirrors.end(), [](const Mirror& m) { return m.axis == 1; }) -
+        mirrors.begin());
+
+    // Segments: the merged mirrors of each line, horizontal ones cut at crossings.
+    std::vector<std::pair<std::size_t, std::size_t>> group_of_segment; // mirrors of its line
+    for (std::size_t begin = 0; begin < mirrors.size();) {
+        std::size_t end = begin;
+        while (end < mirrors.size() && mirrors[end].axis == mirrors[begin].axis &&
+               mirrors[end].offset == mirrors[begin].offset)
+            ++end;
+        const int axis = mirrors[begin].axis;
+        const Integer& offset = mirrors[begin].offset;
+        auto add = [&](const Integer& lo, const Integer& hi) {
+            segments_.push_back({axis, offset, lo, hi});
+            group_of_segment.emplace_back(begin, end);
+        };
+        for (std::size_t i = begin; i < end;) {
+            Integer lo = mirrors[i].lo, hi = mirrors[i].hi;
+            std::size_t j = i + 1;
+            for (; j < end && mirrors[j].lo <= hi; ++j)
+                if (mirrors[j].hi > hi) hi = mirrors[j].hi;
+            if (axis == 0) {
+                add(lo, hi);
+            } else {
+                // Vertical mirrors crossing [lo, hi] on the line Y = offset.
+                auto v = std::lower_bound(
+                    mirrors.begin(), mirrors.begin() + static_cast<std::ptrdiff_t>(verticals), lo,
+                    [](const Mirror& m, const Integer& value) { return m.offset < value; });
+                Integer from = lo;
+                for (; v != mirrors.begin() + static_cast<std::ptrdiff_t>(verticals) &&
+                       v->offset <= hi;
+                     ++v) {
+                    if (v->lo > offset || offset > v->hi || v->offset < from) continue;
+                    if (from <= v->offset - 1) add(from, v->offset - 1);
+                    from = v->offset + 1;
+                }
+                if (from <= hi) add(from, hi);
+            }
+            i = j;
+        }
+        begin = end;
+    }
+
+    // Owners: each position goes to the first mirror (by lo) containing it.
+    owners_.resize(segments_.size());
+    for (std::size_t s = 0; s < segments_.size(); ++s) {
+        const Segment& segment = segments_[s];
+        Integer covered = segment.lo - 1;
+        for (std::size_t i = group_of_segment[s].first; i < group_of_segment[s].second; ++i) {
+            const Mirror& m = mirrors[i];
+            if (m.lo > segment.hi) break;
+            Integer from = std::max(m.lo, Integer(covered + 1));
+            Integer to = std::min(m.hi, segment.hi);
+            if (from > to) continue;
+            covered = to;
+            owners_[s].push_back({m.element, std::move(from), std::move(to)});
+        }
+    }
+
+    // Transversals: every segment in every direction, if its class is not empty.
+    transversal_of_.assign(segments_.size() * 4, npos);
+    size_ = 0;
+    for (std::size_t s = 0; s < segments_.size(); ++s) {
+        const Segment& segment = segments_[s];
+        for (unsigned d = 0; d < 4; ++d) {
+            Transversal t;
+            t.axis = segment.axis;
+            t.offset = segment.offset;
+            t.lo = segment.lo;
+            t.hi = segment.hi;
+            t.negative = d;
+            t.w_slope = w_slope(segment.axis, d);
+            // w(u) = slope u + intercept = w(x) (mod G) <=> u = slope (w(x) - intercept).
+            const Integer u = t.w_slope * (w_first_ - w_intercept(segment.axis, segment.offset, d));
+            if (modulus_ == 0) {
+                if (u < segment.lo || u > segment.hi) continue;
+                t.first = u;
+                t.count = 1;
+            } else {
+                t.first = segment.lo + modulo(u - segment.lo, modulus_);
+                if (t.first > segment.hi) continue;
+                t.count = (segment.hi - t.first) / modulus_ + 1;
+            }
+            t.start = size_;
+            size_ += t.count;
+            transversal_of_[s * 4 + d] = transversals_.size();
+            segment_of_.push_back(s);
+            transversals_.push_back(std::move(t));
+        }
+    }
+}
+
+std::optional<std::pair<std::size_t, Integer>> ExchangeLayout::locate(const Integer (&p)[2],
+                                                                      unsigned negative) const {
+    for (int axis = 0; axis < 2; ++axis) {
+        const Integer& offset = p[axis];
+        const Integer& u = p[1 - axis];
+        auto after =
+            std::upper_bound(segments_.begin(), segments_.end(), 0, [&](int, const Segment& s) {
+                return std::tie(axis, offset, u) < std::tie(s.axis, s.offset, s.lo);
+            });
+        if (after == segments_.begin()) continue;
+        const Segment& s = *(after - 1);
+        if (s.axis != axis || s.offset != offset || u > s.hi) continue;
+        // On a vertical segment the state is that one's, in class or not.
+        const std::size_t id =
+            transversal_of_[static_cast<std::size_t>(after - 1 - segments_.begin()) * 4 + negative];
+        if (id == npos) return std::nullopt;
+        const Transversal& t = transversals_[id];
+        if (modulus_ == 0 ? u != t.first : modulo(u - t.first, modulus_) != 0) return std::nullopt;
+        return std::make_pair(id, number_of(t, modulus_, u));
+    }
+    return std::nullopt;
+}
+
+std::optional<std::pair<Integer, Integer>> class_range(const Transversal& t, const Integer& modulus,
+                                                       const Integer& from, const Integer& to) {
+    if (modulus == 0) {
+        if (t.first < from || t.first > to) return std::nullopt;
+        return std::make_pair(t.first, t.first);
+    }
+    Integer lo = from + modulo(t.first - from, modulus);
+    if (lo > to) return std::nullopt;
+    Integer hi = lo + (to - lo) / modulus * modulus;
+    return std::make_pair(std::move(lo), std::move(hi));
+}
+
+Integer number_of(const Transversal& t, const Integer& modulus, const Integer& u) {
+    if (modulus == 0) return 0;
+    Integer j = (u - t.first) / modulus;
+    return t.w_slope > 0 ? j : Integer(t.count - 1 - j);
+}
+
+namespace {
+
+// Splits piece i at `offset` into [start, start + offset) and the rest.
+void split(std::vector<RawPiece>& pieces, std::size_t i, const Integer& offset) {
+    RawPiece rest = pieces[i];
+    rest.start += offset;
+    rest.length -= offset;
+    if (rest.kind == PieceKind::reflect) rest.image += offset;
+    pieces[i].length = offset;
+    pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(i) + 1, std::move(rest));
+}
+
+// Makes the state at raw coordinate c a piece of its own; returns its index.
+std::size_t isolate(std::vector<RawPiece>& pieces, const Integer& c) {
+    auto after = std::upper_bound(pieces.begin(), pieces.end(), c,
+                                  [](const Integer& v, const RawPiece& p) { return v < p.start; });
+    std::size_t i = static_cast<std::size_t>(after - pieces.begin()) - 1;
+    if (pieces[i].start < c) {
+        split(pieces, i, c - pieces[i].start);
+        ++i;
+    }
+    if (pieces[i].length > 1) split(pieces, i, 1);
+    return i;
+}
+
+} // namespace
+
+IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> pieces,
+                                 const Integer& raw_first, const std::vector<Integer>& raw_hits) {
+    const Integer& n = layout.size();
+    std::sort(pieces.begin(), pieces.end(),
+              [](const RawPiece& a, const RawPiece& b) { return a.start < b.start; });
+    Integer at = 0;
+    for (const RawPiece& p : pieces) {
+        if (p.start != at) throw std::logic_error("the tables' pieces do not tile the states");
+        at += p.length;
+    }
+    if (at != n) throw std::logic_error("the tables' pieces do not tile the states");
+
+    isolate(pieces, raw_first);
+    for (const Integer& h : raw_hits) pieces[isolate(pieces, h)].hit = true;
+
+    // Close the holes: escaping and absorbed pieces, in domain order, onto
+    // the states no piece maps to, in order.
+    std::vector<std::pair<Integer, Integer>> images; // (start, length) of the reflecting ones
+    for (const RawPiece& p : pieces)
+        if (p.kind == PieceKind::reflect) images.emplace_back(p.image, p.length);
+    std::sort(images.begin(), images.end());
+    std::vector<std::pair<Integer, Integer>> holes;
+    at = 0;
+    for (const auto& [start, length] : images) {
+        if (start < at) throw std::logic_error("two states of the tables have one image");
+        if (start > at) holes.emplace_back(at, start - at);
+        at = start + length;
+    }
+    if (at < n) holes.emplace_back(at, n - at);
+    std::vector<RawPiece> closed;
+    closed.reserve(pieces.size() + holes.size());
+    std::size_t hole = 0;
+    Integer used = 0; // of the current hole
+    for (RawPiece& p : pieces) {
+        if (p.kind == PieceKind::reflect) {
+            closed.push_back(std::move(p));
+            continue;
+        }
+        Integer start = p.start, left = p.length;
+        while (left > 0) {
+            if (hole == holes.size()) throw std::logic_error("more dead states than holes");
+            const Integer room = holes[hole].second - used;
+            RawPiece part = p;
+            part.start = start;
+            part.length = std::min(left, room);
+            part.image = holes[hole].first + used;
+            start += part.length;
+            left -= part.length;
+            used += part.length;
+            if (used == holes[hole].second) {
+                ++hole;
+                used = 0;
+            }
+            closed.push_back(std::move(part));
+        }
+    }
+
+    // Rotate so that x is 0; an image that wraps around is cut in two.
+    IntervalExchange exchange;
+    for (RawPiece& p : closed) {
+        ExchangePiece q;
+        q.start = modulo(p.start - raw_first, n);
+        q.image = modulo(p.image - raw_first, n);
+        q.length = p.length;
+        q.kind = p.kind;
+        q.hit = p.hit;
+        if (q.image + q.length > n) {
+            ExchangePiece rest = q;
+            const Integer head = n - q.image;
+            rest.start += head;
+            rest.length -= head;
+            rest.image = 0;
+            q.length = head;
+            exchange.pieces.push_back(std::move(rest));
+        }
+        exchange.pieces.push_back(std::move(q));
+    }
+    std::sort(exchange.pieces.begin(), exchange.pieces.end(),
+              [](const ExchangePiece& a, const ExchangePiece& b) { return a.start < b.start; });
+    if (exchange.pieces.front().start != 0 || exchange.pieces.front().length != 1)
+        throw std::logic_error("x is not a piece of its own");
+    exchange.modulus = layout.modulus();
+    exchange.size = n;
+    exchange.transversals = std::move(layout.transversals());
+    return exchange;
+}
+
+} // namespace orthoray::induction

@@ -1,0 +1,39 @@
+// The polynomial-time 2D engine: build the interval exchange from the piece
+// tables, induce on it, and turn the orbit of x into an answer
+// (docs/induction.md). The lattice engine calls it once a run has its
+// tables: right away for Engine::induction, after a short simulation for
+// Engine::automatic.
+#pragma once
+
+#include "induction/interval_exchange.hpp"
+#include "induction/rauzy_induction.hpp"
+#include "lattice/lattice_scene.hpp"
+#include "orthoray/solve.hpp"
+#include "shoot/piece_table.hpp"
+#include "shoot/uniform_grid.hpp"
+
+#include <optional>
+
+namespace orthoray::induction {
+
+// Writes an induction certificate: the exchange, then every step (a
+// CertificateWriter offers one through PathSink::exchange_recorder()).
+class ExchangeRecorder : public StepSink {
+public:
+    virtual void begin(const IntervalExchange& exchange) = 0;
+};
+
+struct Decision {
+    std::optional<Answer> answer; // decided, within options.max_steps
+    std::optional<Limit> limit;   // the monitor stopped the induction
+};
+
+// Decides the run whose first reflection has been taken (`reflections` so
+// far, for the monitor). No answer and no limit means the answer needs more
+// reflections than options.max_steps allows: the caller simulates up to it.
+template <class Int>
+Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<Int, 2>& grid,
+                const lattice::PieceTable<Int>& table, const SolveOptions& options,
+                std::uint64_t reflections);
+
+} // namespace orthoray::induction

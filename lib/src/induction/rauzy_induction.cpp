@@ -1,0 +1,189 @@
+#include "induction/rauzy_induction.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+namespace orthoray::induction {
+namespace {
+
+constexpr std::size_t none = ~std::size_t{0};
+
+// A piece of the induced map: its length, its return time, its first event.
+struct Piece {
+    Integer length, ret, offset;
+    EventKind event = EventKind::none;
+};
+
+// A doubly linked order of piece numbers (the domain order or the image order).
+class Order {
+public:
+    explicit Order(const std::vector<std::size_t>& sequence)
+        : prev_(sequence.size(), none), next_(sequence.size(), none) {
+        for (std::size_t i = 0; i < sequence.size(); ++i) {
+            if (i > 0) prev_[sequence[i]] = sequence[i - 1];
+            if (i + 1 < sequence.size()) next_[sequence[i]] = sequence[i + 1];
+        }
+        head_ = sequence.front();
+        tail_ = sequence.back();
+    }
+    std::size_t tail() const { return tail_; }
+    std::size_t prev(std::size_t p) const { return prev_[p]; }
+    std::size_t next(std::size_t p) const { return next_[p]; }
+
+    void remove(std::size_t p) {
+        (prev_[p] == none ? head_ : next_[prev_[p]]) = next_[p];
+        (next_[p] == none ? tail_ : prev_[next_[p]]) = prev_[p];
+    }
+    void insert_after(std::size_t p, std::size_t anchor) {
+        prev_[p] = anchor;
+        next_[p] = next_[anchor];
+        (next_[anchor] == none ? tail_ : prev_[next_[anchor]]) = p;
+        next_[anchor] = p;
+    }
+    // p takes q's place; q leaves the order.
+    void replace(std::size_t q, std::size_t p) {
+        prev_[p] = prev_[q];
+        next_[p] = next_[q];
+        (prev_[q] == none ? head_ : next_[prev_[q]]) = p;
+        (next_[q] == none ? tail_ : prev_[next_[q]]) = p;
+    }
+
+private:
+    std::vector<std::size_t> prev_, next_;
+    std::size_t head_ = none, tail_ = none;
+};
+
+// `a` becomes "a, then b": the first event of a if it has one, else b's.
+void then(Piece& a, const Piece& b) {
+    if (a.event == EventKind::none && b.event != EventKind::none) {
+        a.event = b.event;
+        a.offset = a.ret + b.offset;
+    }
+    a.ret += b.ret;
+}
+
+// `a` becomes "b, `times` times, then a" (b's return time is r_b).
+void after(Piece& a, const Piece& b, const Integer& times) {
+    if (b.event != EventKind::none) {
+        a.event = b.event;
+        a.offset = b.offset;
+    } else if (a.event != EventKind::none) {
+        a.offset += times * b.ret;
+    }
+    a.ret += times * b.ret;
+}
+
+// `a` becomes "a, then b `times` times".
+void then_repeated(Piece& a, const Piece& b, const Integer& times) {
+    if (a.event == EventKind::none && b.event != EventKind::none) {
+        a.event = b.event;
+        a.offset = a.ret + b.offset;
+    }
+    a.ret += times * b.ret;
+}
+
+} // namespace
+
+std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* sink,
+                                   const std::function<bool(std::uint64_t)>& stop) {
+    const std::size_t k = exchange.pieces.size();
+    std::vector<Piece> piece(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        const ExchangePiece& e = exchange.pieces[i];
+        piece[i].length = e.length;
+        piece[i].ret = 1;
+        piece[i].offset = 0;
+        piece[i].event = e.hit                           ? EventKind::hit
+                         : e.kind == PieceKind::escape   ? EventKind::escape
+                         : e.kind == PieceKind::absorbed ? EventKind::absorbed
+                                                         : EventKind::none;
+    }
+    std::vector<std::size_t> by_start(k), by_image(k);
+    std::iota(by_start.begin(), by_start.end(), std::size_t{0});
+    std::iota(by_image.begin(), by_image.end(), std::size_t{0});
+    std::sort(by_image.begin(), by_image.end(), [&](std::size_t a, std::size_t b) {
+        return exchange.pieces[a].image < exchange.pieces[b].image;
+    });
+    Order domain(by_start), image(by_image);
+
+    OrbitOfFirst orbit;
+    Integer total, rounds;
+    std::vector<std::size_t> walked;
+    for (std::uint64_t iteration = 1;; ++iteration) {
+        if ((iteration & 0xfff) == 0 && stop && stop(orbit.steps)) return std::nullopt;
+        const std::size_t d = domain.tail(), r = image.tail();
+        if (d == r) {
+            // Piece 0 (x) is first in the domain: it is last only when alone.
+            if (d == 0) break;
+            ++orbit.steps;
+            if (sink) sink->invariant(d);
+            domain.remove(d);
+            image.remove(d);
+            continue;
+        }
+        const int order = cmp(piece[d].length, piece[r].length);
+        if (order == 0) {
+            ++orbit.steps;
+            if (sink) sink->equal(r, d);
+            then(piece[r], piece[d]);
+            image.remove(r);
+            image.replace(d, r);
+            domain.remove(d);
+            continue;
+        }
+        // The winner w keeps its place; the losers are the pieces after it
+        // in the other order, consumed from the end of that order.
+        const bool top = order > 0;
+        const std::size_t w = top ? d : r;
+        const Order& losers = top ? image : domain;
+        walked.clear();
+        total = 0;
+        std::size_t p = top ? r : d;
+        while (p != w && total < piece[w].length) {
+            walked.push_back(p);
+            total += piece[p].length;
+            p = losers.prev(p);
+        }
+        if (p == w && total < piece[w].length) {
+            // Whole rounds through every loser: floor((l_w - 1) / S) of them
+            // leave l_w positive, and the orders are as before.
+            rounds = (piece[w].length - 1) / total;
+            for (std::size_t q : walked) {
+                if (top)
+                    then_repeated(piece[q], piece[w], rounds);
+                else
+                    after(piece[q], piece[w], rounds);
+            }
+            piece[w].length -= rounds * total;
+            ++orbit.steps;
+            ++orbit.rounds;
+            if (sink) top ? sink->top_cycle(w, rounds) : sink->bottom_cycle(w, rounds);
+            continue;
+        }
+        // Single steps against every loser whose running total stays below
+        // l_w (all walked pieces but the last); the last one is compared again.
+        for (std::size_t i = 0; i + 1 < walked.size(); ++i) {
+            const std::size_t q = walked[i];
+            ++orbit.steps;
+            if (top) {
+                if (sink) sink->top(w, q);
+                then(piece[q], piece[w]);
+                image.remove(q);
+                image.insert_after(q, w);
+            } else {
+                if (sink) sink->bottom(w, q);
+                after(piece[q], piece[w], 1);
+                domain.remove(q);
+                domain.insert_after(q, w);
+            }
+            piece[w].length -= piece[q].length;
+        }
+    }
+    orbit.event = piece[0].event;
+    orbit.offset = piece[0].offset;
+    orbit.period = piece[0].ret;
+    return orbit;
+}
+
+} // namespace orthoray::induction
