@@ -18,9 +18,17 @@ int clamp_int(long long value) {
 // can hold several (the header holds the version and dim, the verdict holds
 // answer, reason, reflections and the reason's own values), and the order
 // of keys inside the object does not matter.
+// The induction statements (docs/induction-certificates.md) come one a line.
 constexpr std::string_view json_keywords[] = {"orthoray-certificate",
                                               "dim",
                                               "point",
+                                              "method",
+                                              "scale",
+                                              "modulus",
+                                              "transversal",
+                                              "first",
+                                              "piece",
+                                              "step",
                                               "answer",
                                               "reason",
                                               "reflections",

@@ -221,23 +221,22 @@ Parsed parse(CertificateReader& in, int dim) {
         in.advance();
     }
     if (in.keyword() != "answer") in.fail(0, "'step' or 'answer'");
-    in.expect("answer", 1, "yes or no");
+    in.expect("answer", 1, "yes, no or unknown");
     p.answer = std::string(in.token(1));
-    if (p.answer != "yes" && p.answer != "no") in.fail(1, "yes or no");
+    if (p.answer != "yes" && p.answer != "no" && p.answer != "unknown")
+        in.fail(1, "yes, no or unknown");
     in.advance();
-    in.expect("reason", 1, "hit, escape, absorbed or cycle");
+    in.expect("reason", 1, "hit, escape, absorbed, cycle or limit");
     {
-        const std::string_view r = in.token(1);
-        if (r == "hit")
-            p.reason = Reason::hit;
-        else if (r == "escape")
-            p.reason = Reason::escape;
-        else if (r == "absorbed")
-            p.reason = Reason::absorbed;
-        else if (r == "cycle")
-            p.reason = Reason::cycle;
-        else
-            in.fail(1, "hit, escape, absorbed or cycle");
+        static constexpr Reason all[] = {Reason::hit, Reason::escape, Reason::absorbed,
+                                         Reason::cycle, Reason::limit};
+        bool known = false;
+        for (Reason r : all)
+            if (in.token(1) == to_string(r)) {
+                p.reason = r;
+                known = true;
+            }
+        if (!known) in.fail(1, "hit, escape, absorbed, cycle or limit");
     }
     in.advance();
     in.expect("reflections", 1, "a non-negative integer");
@@ -246,6 +245,10 @@ Parsed parse(CertificateReader& in, int dim) {
         in.advance();
         in.expect("period", 1, "a non-negative integer");
         p.period = in.count(1);
+    }
+    if (p.reason == Reason::limit) { // the solver was stopped while writing the steps
+        in.advance();
+        in.expect("partial", 0, in.end_of_statement());
     }
     in.advance();
     in.expect("end", 0, in.end_of_statement());
@@ -405,12 +408,19 @@ public:
     InductionCheck(const Scene& scene, const PathPrefix& prefix, Parsed p)
         : scene_(scene), prefix_(prefix), p_(std::move(p)) {}
 
-    std::string run() {
+    Verdict run() {
         check_header();
         check_transversals();
         check_pieces();
         replay_steps();
-        const std::string verdict = check_verdict();
+        if (p_.reason == Reason::limit) {
+            if (p_.answer != "unknown")
+                fail("verdict", "answer " + p_.answer + " does not go with reason limit");
+            return {false, "partial certificate: the exchange and " +
+                               std::to_string(p_.steps.size()) +
+                               " induction steps checked, no answer proven"};
+        }
+        Verdict verdict{true, check_verdict()};
         resimulate();
         return verdict;
     }
@@ -1084,6 +1094,7 @@ private:
             }
             }
         }
+        if (p_.reason == Reason::limit) return; // stopped before the end
         if (L != 1)
             fail("steps",
                  "after the last step L = " + str(L) + ", not 1 (the induction is not done)");
@@ -1199,7 +1210,7 @@ Verdict verify_induction(const Scene& scene, CertificateReader& in, const PathPr
     Parsed parsed = parse(in, scene.dim);
     try {
         InductionCheck check(scene, prefix, std::move(parsed));
-        return {true, check.run()};
+        return check.run();
     } catch (const Failure& failure) {
         return {false, failure.message};
     }
