@@ -43,18 +43,6 @@ namespace {
 
 // ---------------------------------------------------------------- integers --
 
-Integer floor_div(const Integer& a, const Integer& b) {
-    Integer q;
-    mpz_fdiv_q(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-    return q;
-}
-
-Integer ceil_div(const Integer& a, const Integer& b) {
-    Integer q;
-    mpz_cdiv_q(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-    return q;
-}
-
 // a mod m in [0, m), m > 0.
 Integer floor_mod(const Integer& a, const Integer& m) {
     Integer r;
@@ -104,9 +92,17 @@ struct PieceSpec {
 
 struct StepSpec {
     StepKind kind = StepKind::top;
-    std::string text; // as written, for messages
     Integer first, second;
 };
+
+// The step as written, for messages.
+std::string step_text(const StepSpec& s) {
+    static constexpr const char* names[] = {"top",       "bottom",    "equal",
+                                            "invariant", "top-cycle", "bottom-cycle"};
+    std::string text = std::string("step ") + names[static_cast<int>(s.kind)] + " " + str(s.first);
+    if (s.kind != StepKind::invariant) text += " " + str(s.second);
+    return text;
+}
 
 struct Parsed {
     Vector v1;
@@ -115,7 +111,7 @@ struct Parsed {
     std::vector<TransversalSpec> transversals;
     Integer first_t, first_i;
     std::vector<PieceSpec> pieces;
-    std::vector<StepSpec> steps;
+    std::size_t steps = 0; // how many `step` lines were read
     std::string answer;
     Reason reason = Reason::cycle;
     Integer reflections, period;
@@ -134,7 +130,8 @@ int read_sign(const CertificateReader& in, std::size_t index) {
     in.fail(index, "1 or -1");
 }
 
-Parsed parse(CertificateReader& in, int dim) {
+// Everything up to the last piece; `in` is left on the statement after it.
+Parsed parse_exchange(CertificateReader& in, int dim) {
     Parsed p;
     in.expect("method", 1, "'induction'");
     if (in.token(1) != "induction") in.fail(1, "'induction'");
@@ -192,8 +189,13 @@ Parsed parse(CertificateReader& in, int dim) {
         in.advance();
     }
     if (p.pieces.empty()) in.fail(0, "'piece'");
-    while (in.keyword() == "step") {
-        if (in.size() < 2) in.fail(1, "top, bottom, equal, invariant, top-cycle or bottom-cycle");
+    return p;
+}
+
+// The `step` statement `in` is on.
+StepSpec parse_step(const CertificateReader& in) {
+    if (in.size() < 2) in.fail(1, "top, bottom, equal, invariant, top-cycle or bottom-cycle");
+    {
         StepSpec s;
         const std::string_view kind = in.token(1);
         std::size_t operands = 2;
@@ -215,11 +217,12 @@ Parsed parse(CertificateReader& in, int dim) {
         if (in.size() > operands + 2) in.fail(operands + 2, in.end_of_statement());
         s.first = in.count(2);
         if (operands == 2) s.second = in.count(3);
-        s.text = "step " + std::string(kind) + " " + str(s.first) +
-                 (operands == 2 ? " " + str(s.second) : std::string());
-        p.steps.push_back(std::move(s));
-        in.advance();
+        return s;
     }
+}
+
+// The verdict, from `answer` to `end`.
+void parse_verdict(CertificateReader& in, Parsed& p) {
     if (in.keyword() != "answer") in.fail(0, "'step' or 'answer'");
     in.expect("answer", 1, "yes, no or unknown");
     p.answer = std::string(in.token(1));
@@ -253,7 +256,6 @@ Parsed parse(CertificateReader& in, int dim) {
     in.advance();
     in.expect("end", 0, in.end_of_statement());
     if (in.next()) in.fail(0, "end of file (nothing may follow 'end')");
-    return p;
 }
 
 // ------------------------------------------------------ lattice geometry --
@@ -408,21 +410,56 @@ public:
     InductionCheck(const Scene& scene, const PathPrefix& prefix, Parsed p)
         : scene_(scene), prefix_(prefix), p_(std::move(p)) {}
 
-    Verdict run() {
-        check_header();
-        check_transversals();
-        check_pieces();
-        replay_steps();
-        if (p_.reason == Reason::limit) {
-            if (p_.answer != "unknown")
-                fail("verdict", "answer " + p_.answer + " does not go with reason limit");
-            return {false, "partial certificate: the exchange and " +
-                               std::to_string(p_.steps.size()) +
-                               " induction steps checked, no answer proven"};
+    // Runs `check` unless a check failed before; keeps the first failure.
+    template <class Check>
+    void guard(Check check) {
+        if (failure_) return;
+        try {
+            check();
+        } catch (const Failure& failure) {
+            failure_ = failure.message;
         }
-        Verdict verdict{true, check_verdict()};
-        resimulate();
-        return verdict;
+    }
+
+    // Checks 1 to 3, then sets up the replay.
+    void begin() {
+        guard([&] {
+            check_header();
+            check_transversals();
+            check_pieces();
+            start_replay();
+        });
+    }
+
+    // Check 4, one step at a time as they are read (they are not kept).
+    void step(const StepSpec& s, std::size_t number) {
+        guard([&] { replay(s, number); });
+    }
+
+    // After the verdict has been read into the parsed data.
+    Verdict finish(std::size_t steps, const std::string& answer, Reason reason,
+                   const Integer& reflections, const Integer& period) {
+        p_.steps = steps;
+        p_.answer = answer;
+        p_.reason = reason;
+        p_.reflections = reflections;
+        p_.period = period;
+        std::optional<Verdict> verdict;
+        guard([&] {
+            if (p_.reason == Reason::limit) {
+                if (p_.answer != "unknown")
+                    fail("verdict", "answer " + p_.answer + " does not go with reason limit");
+                verdict = Verdict{false, "partial certificate: the exchange and " +
+                                             std::to_string(p_.steps) +
+                                             " induction steps checked, no answer proven"};
+                return;
+            }
+            end_replay();
+            verdict = Verdict{true, check_verdict()};
+            resimulate();
+        });
+        if (failure_) return {false, *failure_};
+        return *verdict;
     }
 
 private:
@@ -943,7 +980,7 @@ private:
         return e;
     }
 
-    void replay_steps() {
+    void start_replay() {
         live_.clear();
         for (const PieceSpec& piece : p_.pieces) {
             Live w;
@@ -960,26 +997,31 @@ private:
                 w.event.type = EventMark::absorbed;
             live_.push_back(std::move(w));
         }
-        Integer L = n_;
-        for (std::size_t k = 0; k < p_.steps.size(); ++k) {
-            const StepSpec& s = p_.steps[k];
-            const std::string where = "step " + std::to_string(k + 1) + " (" + s.text + ")";
-            if (L == 1) fail(where, "the induction has ended (L = 1)");
+        L_ = n_;
+    }
+
+    void replay(const StepSpec& s, std::size_t step_number) {
+        Integer& L = L_;
+        {
+            auto where = [&] {
+                return "step " + std::to_string(step_number) + " (" + step_text(s) + ")";
+            };
+            if (L == 1) fail(where(), "the induction has ended (L = 1)");
             auto piece = [&](const Integer& number) -> Live& {
-                if (number >= live_.size()) fail(where, "there is no piece " + str(number));
+                if (number >= live_.size()) fail(where(), "there is no piece " + str(number));
                 Live& w = live_[number.get_ui()];
-                if (!w.alive) fail(where, "piece " + str(number) + " was removed earlier");
+                if (!w.alive) fail(where(), "piece " + str(number) + " was removed earlier");
                 return w;
             };
             auto domain_ends = [&](const Integer& number, const Live& w) {
                 if (w.d + w.l != L)
-                    fail(where, "piece " + str(number) + "'s domain [" + str(w.d) + ", " +
-                                    str(w.d + w.l) + ") does not end at L = " + str(L));
+                    fail(where(), "piece " + str(number) + "'s domain [" + str(w.d) + ", " +
+                                      str(w.d + w.l) + ") does not end at L = " + str(L));
             };
             auto image_ends = [&](const Integer& number, const Live& w) {
                 if (w.i + w.l != L)
-                    fail(where, "piece " + str(number) + "'s image [" + str(w.i) + ", " +
-                                    str(w.i + w.l) + ") does not end at L = " + str(L));
+                    fail(where(), "piece " + str(number) + "'s image [" + str(w.i) + ", " +
+                                      str(w.i + w.l) + ") does not end at L = " + str(L));
             };
             auto lengths = [&](const Integer& a, const Live& wa, const char* rel, const Integer& b,
                                const Live& wb) {
@@ -993,7 +1035,8 @@ private:
                 domain_ends(s.first, d);
                 image_ends(s.second, r);
                 if (d.l <= r.l)
-                    fail(where, "needs l_D > l_R, but " + lengths(s.first, d, " <= ", s.second, r));
+                    fail(where(),
+                         "needs l_D > l_R, but " + lengths(s.first, d, " <= ", s.second, r));
                 r.event = then(r, d);
                 r.r += d.r;
                 r.i = d.i + d.l - r.l;
@@ -1007,7 +1050,8 @@ private:
                 image_ends(s.first, r);
                 domain_ends(s.second, d);
                 if (r.l <= d.l)
-                    fail(where, "needs l_R > l_D, but " + lengths(s.first, r, " <= ", s.second, d));
+                    fail(where(),
+                         "needs l_R > l_D, but " + lengths(s.first, r, " <= ", s.second, d));
                 d.event = then(r, d);
                 d.r += r.r;
                 d.d = r.d + r.l - d.l;
@@ -1016,13 +1060,14 @@ private:
                 break;
             }
             case StepKind::equal: {
-                if (s.first == s.second) fail(where, "names one piece twice (that is invariant)");
+                if (s.first == s.second) fail(where(), "names one piece twice (that is invariant)");
                 Live& r = piece(s.first);
                 Live& d = piece(s.second);
                 image_ends(s.first, r);
                 domain_ends(s.second, d);
                 if (r.l != d.l)
-                    fail(where, "needs l_R = l_D, but " + lengths(s.first, r, " != ", s.second, d));
+                    fail(where(),
+                         "needs l_R = l_D, but " + lengths(s.first, r, " != ", s.second, d));
                 r.event = then(r, d);
                 r.r += d.r;
                 r.i = d.i;
@@ -1045,12 +1090,12 @@ private:
                 const Integer above = d.i + d.l;
                 const Integer shift = L - above;
                 if (sgn(shift) == 0)
-                    fail(where,
+                    fail(where(),
                          "piece " + str(s.first) + "'s image ends at L, so it is not a top step");
-                if (sgn(m) == 0) fail(where, "M must be at least 1");
+                if (sgn(m) == 0) fail(where(), "M must be at least 1");
                 if (m * shift >= d.l)
-                    fail(where, "needs M * S < l_D, but M * S = " + str(m) + " * " + str(shift) +
-                                    " = " + str(m * shift) + " >= l_D = " + str(d.l));
+                    fail(where(), "needs M * S < l_D, but M * S = " + str(m) + " * " + str(shift) +
+                                      " = " + str(m * shift) + " >= l_D = " + str(d.l));
                 const Integer moved = m * shift;
                 for (Live& w : live_) {
                     if (!w.alive || &w == &d || w.i < above) continue;
@@ -1072,12 +1117,12 @@ private:
                 const Integer above = r.d + r.l;
                 const Integer shift = L - above;
                 if (sgn(shift) == 0)
-                    fail(where, "piece " + str(s.first) +
-                                    "'s domain ends at L, so it is not a bottom step");
-                if (sgn(m) == 0) fail(where, "M must be at least 1");
+                    fail(where(), "piece " + str(s.first) +
+                                      "'s domain ends at L, so it is not a bottom step");
+                if (sgn(m) == 0) fail(where(), "M must be at least 1");
                 if (m * shift >= r.l)
-                    fail(where, "needs M * S < l_R, but M * S = " + str(m) + " * " + str(shift) +
-                                    " = " + str(m * shift) + " >= l_R = " + str(r.l));
+                    fail(where(), "needs M * S < l_R, but M * S = " + str(m) + " * " + str(shift) +
+                                      " = " + str(m * shift) + " >= l_R = " + str(r.l));
                 const Integer moved = m * shift;
                 for (Live& w : live_) {
                     if (!w.alive || &w == &r || w.d < above) continue;
@@ -1094,7 +1139,10 @@ private:
             }
             }
         }
-        if (p_.reason == Reason::limit) return; // stopped before the end
+    }
+
+    void end_replay() {
+        const Integer& L = L_;
         if (L != 1)
             fail("steps",
                  "after the last step L = " + str(L) + ", not 1 (the induction is not done)");
@@ -1192,14 +1240,16 @@ private:
 
     const Scene& scene_;
     const PathPrefix& prefix_;
-    const Parsed p_;
+    Parsed p_;
     int dx1_ = 1, dy1_ = 1;
     Integer p1x_, p1y_, tx_, ty_, wx_;
     std::vector<LatticeElement> elements_;
     std::vector<Transversal> transversals_;
     Integer n_, raw_x_;
     std::vector<Live> live_;
+    Integer L_; // the induced map lives on [0, L)
     Live final_;
+    std::optional<std::string> failure_;
     std::vector<Meeting> meetings_; // reused for every run of every piece
     Scratch scratch_;
 };
@@ -1207,13 +1257,20 @@ private:
 } // namespace
 
 Verdict verify_induction(const Scene& scene, CertificateReader& in, const PathPrefix& prefix) {
-    Parsed parsed = parse(in, scene.dim);
-    try {
-        InductionCheck check(scene, prefix, std::move(parsed));
-        return check.run();
-    } catch (const Failure& failure) {
-        return {false, failure.message};
+    // The exchange is read whole and checked; the steps, which may be
+    // millions, are replayed as they are read. After the first failure the
+    // rest is still parsed (syntax errors win) but no longer checked.
+    InductionCheck check(scene, prefix, parse_exchange(in, scene.dim));
+    check.begin();
+    std::size_t steps = 0;
+    while (in.keyword() == "step") {
+        const StepSpec s = parse_step(in);
+        check.step(s, ++steps);
+        in.advance();
     }
+    Parsed verdict;
+    parse_verdict(in, verdict);
+    return check.finish(steps, verdict.answer, verdict.reason, verdict.reflections, verdict.period);
 }
 
 } // namespace orthoray::certify
