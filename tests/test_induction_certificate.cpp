@@ -1068,3 +1068,146 @@ TEST_CASE("a hallway of length 2 * 10^30", "[induction-certificate]") {
     blocked.add_mirror(0, Rational(m + 1), {{0, 1}});
     expect_invalid(blocked, text, "meets the mirror x = " + n(m + 1));
 }
+
+// ------------------------------------------------------ the engine's own --
+
+namespace {
+
+// Another word of the same statement slot, so a tamper stays well formed.
+std::string other_word(const std::string& word, std::mt19937_64& rng) {
+    const std::vector<std::vector<std::string>> families = {
+        {"reflect", "escape", "absorbed"},
+        {"top", "bottom", "equal", "invariant", "top-cycle", "bottom-cycle"},
+        {"yes", "no"},
+        {"hit", "escape", "absorbed", "cycle"}};
+    for (const auto& family : families)
+        for (const std::string& w : family)
+            if (w == word) {
+                std::string pick = word;
+                while (pick == word)
+                    pick = family[std::uniform_int_distribution<std::size_t>(0, family.size() -
+                                                                                    1)(rng)];
+                return pick;
+            }
+    return word;
+}
+
+// One token of one statement changed: a number moved by one to three, a
+// word swapped for another of its kind, or a trailing `hit` dropped.
+std::string tamper_once(const std::string& text, std::mt19937_64& rng, std::string& what) {
+    std::vector<std::string> lines;
+    {
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+    }
+    for (;;) {
+        const std::size_t at = std::uniform_int_distribution<std::size_t>(2, lines.size() - 2)(rng);
+        std::vector<std::string> t;
+        {
+            std::istringstream words(lines[at]);
+            for (std::string w; words >> w;) t.push_back(w);
+        }
+        if (t.size() < 2) continue;
+        const std::size_t j = std::uniform_int_distribution<std::size_t>(1, t.size() - 1)(rng);
+        const orthoray::NumberToken n = orthoray::read_number(t[j]);
+        std::string changed;
+        if (n.status == orthoray::NumberToken::Status::ok) {
+            const int delta = std::uniform_int_distribution<int>(1, 3)(rng);
+            changed = orthoray::to_string(n.value +
+                                          (std::bernoulli_distribution(0.5)(rng) ? delta : -delta));
+        } else if (t[j] == "hit" && j + 1 == t.size() && t[0] == "piece") {
+            changed = "";
+        } else {
+            changed = other_word(t[j], rng);
+            if (changed == t[j]) continue;
+        }
+        what = "line " + std::to_string(at + 1) + ": '" + lines[at] + "' token " +
+               std::to_string(j) + " -> '" + changed + "'";
+        t[j] = changed;
+        lines[at].clear();
+        for (const std::string& w : t)
+            if (!w.empty()) lines[at] += (lines[at].empty() ? "" : " ") + w;
+        std::string result;
+        for (const std::string& line : lines) result += line + "\n";
+        return result;
+    }
+}
+
+} // namespace
+
+TEST_CASE("the induction engine's certificates of random scenes verify, tampered ones do not",
+          "[induction-certificate][engine]") {
+    std::mt19937_64 rng(8101);
+    struct Family {
+        orthoray::test::RandomSceneShape shape;
+        int goal;
+    };
+    std::vector<Family> families(3);
+    families[0].shape = {2, 12, 6, 3, 3};
+    families[0].goal = 150;
+    families[1].shape = {2, 12, 6, 1, 2};
+    families[1].goal = 100;
+    families[2].shape = {2, 30, 10, 2, 5};
+    families[2].goal = 100;
+    int induced = 0, tampered = 0, rejected = 0, neutral = 0, jsonl = 0;
+    int by_reason[4] = {};
+    for (Family& family : families) {
+        family.shape.box_chance = 0.9;
+        int got = 0;
+        for (int attempt = 0; got < family.goal && attempt < 20 * family.goal; ++attempt) {
+            Scene scene = orthoray::test::random_scene(rng, family.shape);
+            scene.target = std::bernoulli_distribution(0.5)(rng)
+                               ? orthoray::test::target_on_trajectory(rng, scene)
+                               : orthoray::test::random_point(rng, family.shape);
+            const bool json = std::bernoulli_distribution(0.25)(rng);
+            std::stringstream out;
+            orthoray::CertificateWriter writer(out, scene,
+                                               json ? orthoray::CertificateFormat::jsonl
+                                                    : orthoray::CertificateFormat::text);
+            orthoray::SolveOptions o;
+            o.engine = orthoray::Engine::induction;
+            o.path = &writer;
+            const orthoray::Answer answer = orthoray::solve(scene, o);
+            writer.finish(answer);
+            if (answer.engine != "induction") continue; // answered on the first segments
+            const std::string text = out.str();
+            INFO("scene:\n" << orthoray::write_scene(scene) << "certificate:\n" << text);
+            REQUIRE(text.find("induction") != std::string::npos);
+            const Outcome outcome = verify(scene, text);
+            INFO("verify said: " << outcome.message);
+            const std::string expected = std::string("valid: ") +
+                                         orthoray::to_string(answer.reason) + ", " +
+                                         answer.reflections.get_str() + " reflections";
+            REQUIRE(outcome.valid);
+            REQUIRE(outcome.message == expected);
+            ++got;
+            ++induced;
+            jsonl += json;
+            ++by_reason[static_cast<int>(answer.reason)];
+            if (json) continue; // the tampering below edits the text format
+            for (int k = 0; k < 4; ++k) {
+                std::string what;
+                const std::string bad = tamper_once(text, rng, what);
+                const Outcome t = verify(scene, bad);
+                INFO("tampered " << what << "\nverify said: " << t.message);
+                ++tampered;
+                if (t.valid) {
+                    // Some edits change nothing that matters (a transversal's
+                    // LO or HI moved past its last state): the verdict stays true.
+                    CHECK(t.message == expected);
+                    ++neutral;
+                } else {
+                    CHECK((t.input_error || t.message.rfind("invalid: ", 0) == 0));
+                    ++rejected;
+                }
+            }
+        }
+        CHECK(got == family.goal);
+    }
+    WARN("induced " << induced << " (hit/escape/absorbed/cycle " << by_reason[0] << "/"
+                    << by_reason[1] << "/" << by_reason[2] << "/" << by_reason[3] << ", " << jsonl
+                    << " as JSON Lines), tampered " << tampered << ": rejected " << rejected
+                    << ", neutral " << neutral);
+    for (int count : by_reason) CHECK(count >= 10);
+    CHECK(rejected * 10 >= tampered * 9);
+}
