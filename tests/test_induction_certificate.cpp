@@ -871,6 +871,23 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
         expect_invalid(box(), replace(box_certificate, "reflections 4", "reflections 3"),
                        "reflections 3, but the induction gives 4");
     }
+    SECTION("partial") {
+        // A run stopped by a limit while writing the steps.
+        std::string cut = c.substr(0, c.find("step equal 0 2"));
+        const Outcome partial =
+            verify(h, cut + "answer unknown\nreason limit\nreflections 0\npartial\nend\n");
+        CHECK_FALSE(partial.valid);
+        CHECK(partial.message ==
+              "partial certificate: the exchange and 3 induction steps checked, no answer proven");
+        expect_invalid(h,
+                       replace(cut, "step top 2 0", "step top 0 2") +
+                           "answer unknown\nreason limit\nreflections 0\npartial\nend\n",
+                       "step 3 (step top 0 2)");
+        expect_invalid(h, cut + "answer no\nreason limit\nreflections 0\npartial\nend\n",
+                       "answer no does not go with reason limit");
+        expect_malformed(h, cut + "answer unknown\nreason limit\nreflections 0\nend\n",
+                         "found 'end', expected 'partial'");
+    }
     SECTION("truncated and malformed") {
         expect_invalid(h, replace(c, "end\n", ""), "incomplete certificate");
         expect_invalid(h, c.substr(0, c.find("step equal 0 2")), "incomplete certificate");
