@@ -195,30 +195,28 @@ Parsed parse_exchange(CertificateReader& in, int dim) {
 // The `step` statement `in` is on.
 StepSpec parse_step(const CertificateReader& in) {
     if (in.size() < 2) in.fail(1, "top, bottom, equal, invariant, top-cycle or bottom-cycle");
-    {
-        StepSpec s;
-        const std::string_view kind = in.token(1);
-        std::size_t operands = 2;
-        if (kind == "top")
-            s.kind = StepKind::top;
-        else if (kind == "bottom")
-            s.kind = StepKind::bottom;
-        else if (kind == "equal")
-            s.kind = StepKind::equal;
-        else if (kind == "invariant")
-            s.kind = StepKind::invariant, operands = 1;
-        else if (kind == "top-cycle")
-            s.kind = StepKind::top_cycle;
-        else if (kind == "bottom-cycle")
-            s.kind = StepKind::bottom_cycle;
-        else
-            in.fail(1, "top, bottom, equal, invariant, top-cycle or bottom-cycle");
-        if (in.size() < operands + 2) in.fail(in.size(), "a non-negative integer");
-        if (in.size() > operands + 2) in.fail(operands + 2, in.end_of_statement());
-        s.first = in.count(2);
-        if (operands == 2) s.second = in.count(3);
-        return s;
-    }
+    StepSpec s;
+    const std::string_view kind = in.token(1);
+    std::size_t operands = 2;
+    if (kind == "top")
+        s.kind = StepKind::top;
+    else if (kind == "bottom")
+        s.kind = StepKind::bottom;
+    else if (kind == "equal")
+        s.kind = StepKind::equal;
+    else if (kind == "invariant")
+        s.kind = StepKind::invariant, operands = 1;
+    else if (kind == "top-cycle")
+        s.kind = StepKind::top_cycle;
+    else if (kind == "bottom-cycle")
+        s.kind = StepKind::bottom_cycle;
+    else
+        in.fail(1, "top, bottom, equal, invariant, top-cycle or bottom-cycle");
+    if (in.size() < operands + 2) in.fail(in.size(), "a non-negative integer");
+    if (in.size() > operands + 2) in.fail(operands + 2, in.end_of_statement());
+    s.first = in.count(2);
+    if (operands == 2) s.second = in.count(3);
+    return s;
 }
 
 // The verdict, from `answer` to `end`.
@@ -1002,142 +1000,136 @@ private:
 
     void replay(const StepSpec& s, std::size_t step_number) {
         Integer& L = L_;
-        {
-            auto where = [&] {
-                return "step " + std::to_string(step_number) + " (" + step_text(s) + ")";
-            };
-            if (L == 1) fail(where(), "the induction has ended (L = 1)");
-            auto piece = [&](const Integer& number) -> Live& {
-                if (number >= live_.size()) fail(where(), "there is no piece " + str(number));
-                Live& w = live_[number.get_ui()];
-                if (!w.alive) fail(where(), "piece " + str(number) + " was removed earlier");
-                return w;
-            };
-            auto domain_ends = [&](const Integer& number, const Live& w) {
-                if (w.d + w.l != L)
-                    fail(where(), "piece " + str(number) + "'s domain [" + str(w.d) + ", " +
-                                      str(w.d + w.l) + ") does not end at L = " + str(L));
-            };
-            auto image_ends = [&](const Integer& number, const Live& w) {
-                if (w.i + w.l != L)
-                    fail(where(), "piece " + str(number) + "'s image [" + str(w.i) + ", " +
-                                      str(w.i + w.l) + ") does not end at L = " + str(L));
-            };
-            auto lengths = [&](const Integer& a, const Live& wa, const char* rel, const Integer& b,
-                               const Live& wb) {
-                return "l(" + str(a) + ") = " + str(wa.l) + rel + "l(" + str(b) +
-                       ") = " + str(wb.l);
-            };
-            switch (s.kind) {
-            case StepKind::top: {
-                Live& d = piece(s.first);
-                Live& r = piece(s.second);
-                domain_ends(s.first, d);
-                image_ends(s.second, r);
-                if (d.l <= r.l)
-                    fail(where(),
-                         "needs l_D > l_R, but " + lengths(s.first, d, " <= ", s.second, r));
-                r.event = then(r, d);
-                r.r += d.r;
-                r.i = d.i + d.l - r.l;
-                d.l -= r.l;
-                L -= r.l;
-                break;
-            }
-            case StepKind::bottom: {
-                Live& r = piece(s.first);
-                Live& d = piece(s.second);
-                image_ends(s.first, r);
-                domain_ends(s.second, d);
-                if (r.l <= d.l)
-                    fail(where(),
-                         "needs l_R > l_D, but " + lengths(s.first, r, " <= ", s.second, d));
-                d.event = then(r, d);
-                d.r += r.r;
-                d.d = r.d + r.l - d.l;
-                r.l -= d.l;
-                L -= d.l;
-                break;
-            }
-            case StepKind::equal: {
-                if (s.first == s.second) fail(where(), "names one piece twice (that is invariant)");
-                Live& r = piece(s.first);
-                Live& d = piece(s.second);
-                image_ends(s.first, r);
-                domain_ends(s.second, d);
-                if (r.l != d.l)
-                    fail(where(),
-                         "needs l_R = l_D, but " + lengths(s.first, r, " != ", s.second, d));
-                r.event = then(r, d);
-                r.r += d.r;
-                r.i = d.i;
-                d.alive = false;
-                L -= d.l;
-                break;
-            }
-            case StepKind::invariant: {
-                Live& d = piece(s.first);
-                domain_ends(s.first, d);
-                image_ends(s.first, d);
-                d.alive = false;
-                L -= d.l;
-                break;
-            }
-            case StepKind::top_cycle: {
-                Live& d = piece(s.first);
-                domain_ends(s.first, d);
-                const Integer& m = s.second;
-                const Integer above = d.i + d.l;
-                const Integer shift = L - above;
-                if (sgn(shift) == 0)
-                    fail(where(),
-                         "piece " + str(s.first) + "'s image ends at L, so it is not a top step");
-                if (sgn(m) == 0) fail(where(), "M must be at least 1");
-                if (m * shift >= d.l)
-                    fail(where(), "needs M * S < l_D, but M * S = " + str(m) + " * " + str(shift) +
-                                      " = " + str(m * shift) + " >= l_D = " + str(d.l));
-                const Integer moved = m * shift;
-                for (Live& w : live_) {
-                    if (!w.alive || &w == &d || w.i < above) continue;
-                    if (w.event.type == EventMark::none && d.event.type != EventMark::none) {
-                        w.event.type = d.event.type;
-                        w.event.offset = w.r + d.event.offset;
-                    }
-                    w.r += m * d.r;
-                    w.i -= moved;
+        auto where = [&] {
+            return "step " + std::to_string(step_number) + " (" + step_text(s) + ")";
+        };
+        if (L == 1) fail(where(), "the induction has ended (L = 1)");
+        auto piece = [&](const Integer& number) -> Live& {
+            if (number >= live_.size()) fail(where(), "there is no piece " + str(number));
+            Live& w = live_[number.get_ui()];
+            if (!w.alive) fail(where(), "piece " + str(number) + " was removed earlier");
+            return w;
+        };
+        auto domain_ends = [&](const Integer& number, const Live& w) {
+            if (w.d + w.l != L)
+                fail(where(), "piece " + str(number) + "'s domain [" + str(w.d) + ", " +
+                                  str(w.d + w.l) + ") does not end at L = " + str(L));
+        };
+        auto image_ends = [&](const Integer& number, const Live& w) {
+            if (w.i + w.l != L)
+                fail(where(), "piece " + str(number) + "'s image [" + str(w.i) + ", " +
+                                  str(w.i + w.l) + ") does not end at L = " + str(L));
+        };
+        auto lengths = [&](const Integer& a, const Live& wa, const char* rel, const Integer& b,
+                           const Live& wb) {
+            return "l(" + str(a) + ") = " + str(wa.l) + rel + "l(" + str(b) + ") = " + str(wb.l);
+        };
+        switch (s.kind) {
+        case StepKind::top: {
+            Live& d = piece(s.first);
+            Live& r = piece(s.second);
+            domain_ends(s.first, d);
+            image_ends(s.second, r);
+            if (d.l <= r.l)
+                fail(where(), "needs l_D > l_R, but " + lengths(s.first, d, " <= ", s.second, r));
+            r.event = then(r, d);
+            r.r += d.r;
+            r.i = d.i + d.l - r.l;
+            d.l -= r.l;
+            L -= r.l;
+            break;
+        }
+        case StepKind::bottom: {
+            Live& r = piece(s.first);
+            Live& d = piece(s.second);
+            image_ends(s.first, r);
+            domain_ends(s.second, d);
+            if (r.l <= d.l)
+                fail(where(), "needs l_R > l_D, but " + lengths(s.first, r, " <= ", s.second, d));
+            d.event = then(r, d);
+            d.r += r.r;
+            d.d = r.d + r.l - d.l;
+            r.l -= d.l;
+            L -= d.l;
+            break;
+        }
+        case StepKind::equal: {
+            if (s.first == s.second) fail(where(), "names one piece twice (that is invariant)");
+            Live& r = piece(s.first);
+            Live& d = piece(s.second);
+            image_ends(s.first, r);
+            domain_ends(s.second, d);
+            if (r.l != d.l)
+                fail(where(), "needs l_R = l_D, but " + lengths(s.first, r, " != ", s.second, d));
+            r.event = then(r, d);
+            r.r += d.r;
+            r.i = d.i;
+            d.alive = false;
+            L -= d.l;
+            break;
+        }
+        case StepKind::invariant: {
+            Live& d = piece(s.first);
+            domain_ends(s.first, d);
+            image_ends(s.first, d);
+            d.alive = false;
+            L -= d.l;
+            break;
+        }
+        case StepKind::top_cycle: {
+            Live& d = piece(s.first);
+            domain_ends(s.first, d);
+            const Integer& m = s.second;
+            const Integer above = d.i + d.l;
+            const Integer shift = L - above;
+            if (sgn(shift) == 0)
+                fail(where(),
+                     "piece " + str(s.first) + "'s image ends at L, so it is not a top step");
+            if (sgn(m) == 0) fail(where(), "M must be at least 1");
+            if (m * shift >= d.l)
+                fail(where(), "needs M * S < l_D, but M * S = " + str(m) + " * " + str(shift) +
+                                  " = " + str(m * shift) + " >= l_D = " + str(d.l));
+            const Integer moved = m * shift;
+            for (Live& w : live_) {
+                if (!w.alive || &w == &d || w.i < above) continue;
+                if (w.event.type == EventMark::none && d.event.type != EventMark::none) {
+                    w.event.type = d.event.type;
+                    w.event.offset = w.r + d.event.offset;
                 }
-                d.l -= moved;
-                L -= moved;
-                break;
+                w.r += m * d.r;
+                w.i -= moved;
             }
-            case StepKind::bottom_cycle: {
-                Live& r = piece(s.first);
-                image_ends(s.first, r);
-                const Integer& m = s.second;
-                const Integer above = r.d + r.l;
-                const Integer shift = L - above;
-                if (sgn(shift) == 0)
-                    fail(where(), "piece " + str(s.first) +
-                                      "'s domain ends at L, so it is not a bottom step");
-                if (sgn(m) == 0) fail(where(), "M must be at least 1");
-                if (m * shift >= r.l)
-                    fail(where(), "needs M * S < l_R, but M * S = " + str(m) + " * " + str(shift) +
-                                      " = " + str(m * shift) + " >= l_R = " + str(r.l));
-                const Integer moved = m * shift;
-                for (Live& w : live_) {
-                    if (!w.alive || &w == &r || w.d < above) continue;
-                    if (r.event.type != EventMark::none)
-                        w.event = r.event;
-                    else if (w.event.type != EventMark::none)
-                        w.event.offset += m * r.r;
-                    w.r += m * r.r;
-                    w.d -= moved;
-                }
-                r.l -= moved;
-                L -= moved;
-                break;
+            d.l -= moved;
+            L -= moved;
+            break;
+        }
+        case StepKind::bottom_cycle: {
+            Live& r = piece(s.first);
+            image_ends(s.first, r);
+            const Integer& m = s.second;
+            const Integer above = r.d + r.l;
+            const Integer shift = L - above;
+            if (sgn(shift) == 0)
+                fail(where(),
+                     "piece " + str(s.first) + "'s domain ends at L, so it is not a bottom step");
+            if (sgn(m) == 0) fail(where(), "M must be at least 1");
+            if (m * shift >= r.l)
+                fail(where(), "needs M * S < l_R, but M * S = " + str(m) + " * " + str(shift) +
+                                  " = " + str(m * shift) + " >= l_R = " + str(r.l));
+            const Integer moved = m * shift;
+            for (Live& w : live_) {
+                if (!w.alive || &w == &r || w.d < above) continue;
+                if (r.event.type != EventMark::none)
+                    w.event = r.event;
+                else if (w.event.type != EventMark::none)
+                    w.event.offset += m * r.r;
+                w.r += m * r.r;
+                w.d -= moved;
             }
-            }
+            r.l -= moved;
+            L -= moved;
+            break;
+        }
         }
     }
 
