@@ -127,6 +127,30 @@ TEST_CASE("induction meets the families' closed forms", "[induction]") {
                         g.expect->reflections.get_str());
         }
     }
+    for (int a = 1; a <= 9; ++a)
+        for (int b = 1; b <= 9; ++b)
+            for (auto target :
+                 {BoxFamily::Target::reached, BoxFamily::Target::far, BoxFamily::Target::generic}) {
+                BoxFamily family;
+                family.sides = {a, b};
+                family.target = target;
+                const GeneratedScene g = generate_box(family);
+                INFO("box " << a << " x " << b);
+                const Answer induced = solve_with(g.scene, Engine::induction);
+                REQUIRE(summary(induced) == summary(solve_with(g.scene, Engine::lattice)));
+                if (g.expect)
+                    REQUIRE(summary(induced) == std::string(to_string(g.expect->reason)) + " " +
+                                                    g.expect->reflections.get_str());
+            }
+    for (int length = 1; length <= 40; length += 3)
+        for (int den = 1; den <= 7; ++den) {
+            const GeneratedScene g = generate_hallway(length, Rational(den + 1, 2 * den + 1));
+            INFO("hallway " << length << ", slope " << den + 1 << "/" << 2 * den + 1);
+            REQUIRE(g.expect);
+            REQUIRE(summary(solve_with(g.scene, Engine::induction)) ==
+                    std::string(to_string(g.expect->reason)) + " " +
+                        g.expect->reflections.get_str());
+        }
     for (int p = 1; p <= 12; ++p)
         for (int q = 1; q <= 12; ++q) {
             const GeneratedScene g = generate_square(p, q);
