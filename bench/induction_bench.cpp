@@ -231,7 +231,7 @@ int run(const Options& o) {
     csv.row({"family", "param", "elements", "engine", "reason", "reflections", "log10_reflections",
              "runs", "median_seconds", "pieces", "log2_states", "steps", "rounds", "k_log2_states",
              "steps_over_k_log2_states", "induction_seconds"});
-    Table table({"family", "instance", "mirrors", "answer", "reflections", "induction s", "k",
+    Table table({"family", "instance", "elements", "answer", "reflections", "induction s", "k",
                  "log2 N", "steps", "rounds", "steps / (k log2 N)", "simulation s",
                  "simulation / induction"});
     std::fprintf(stderr, "induction_bench: %d run(s), simulation up to %s reflections\n", o.runs,
