@@ -7,6 +7,7 @@
 // Every measurement runs in a forked child process that builds the scene
 // itself, so the peak resident set size (ru_maxrss from wait4) is that of one
 // scene and one engine, and runs do not pollute each other's memory.
+#include "bench_util.hpp"
 #include "float_grid_tracer.hpp"
 #include "scenes.hpp"
 
@@ -196,10 +197,6 @@ Measured in_child(const std::function<ChildResult()>& work) {
     return m;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point begin) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-}
-
 std::uint64_t to_u64(const Integer& x) {
     return x.get_ui();
 }
@@ -253,13 +250,6 @@ ChildResult run_float(const Scene& scene, std::uint64_t steps) {
 // ---------------------------------------------------------------------------
 // Statistics and formatting
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 std::string fixed(double x, int digits) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
@@ -295,46 +285,6 @@ std::string power_of_ten(std::uint64_t n) {
     if (e >= 6) return std::to_string(x) + "*10^" + std::to_string(e);
     return std::to_string(n);
 }
-
-class Table {
-public:
-    explicit Table(std::vector<std::string> header) : header_(std::move(header)) {}
-    void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
-    void print() const {
-        auto line = [](const std::vector<std::string>& cells) {
-            std::string s = "|";
-            for (const std::string& c : cells) s += " " + c + " |";
-            std::printf("%s\n", s.c_str());
-        };
-        line(header_);
-        std::vector<std::string> rule(header_.size(), "---");
-        line(rule);
-        for (const auto& r : rows_) line(r);
-        std::printf("\n");
-    }
-
-private:
-    std::vector<std::string> header_;
-    std::vector<std::vector<std::string>> rows_;
-};
-
-class Csv {
-public:
-    explicit Csv(const std::string& path) {
-        if (path.empty()) return;
-        out_.open(path);
-        if (!out_) throw std::runtime_error("cannot write " + path);
-    }
-    void row(const std::vector<std::string>& cells) {
-        if (!out_.is_open()) return;
-        for (std::size_t i = 0; i < cells.size(); ++i) out_ << (i ? "," : "") << cells[i];
-        out_ << '\n';
-        out_.flush();
-    }
-
-private:
-    std::ofstream out_;
-};
 
 std::string sibling(const std::string& csv, const std::string& suffix) {
     if (csv.empty()) return "";

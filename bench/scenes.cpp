@@ -38,28 +38,29 @@ void set_point(Vector& v, const std::int64_t (&p)[3], int dim) {
 
 } // namespace
 
-Scene random_box(int dim, std::int64_t n, std::uint64_t seed) {
+Scene random_box(int dim, std::int64_t n, std::uint64_t seed, std::int64_t side) {
+    if (side < 4) throw std::invalid_argument("random_box: the side must be at least 4");
     if (dim != 2 && dim != 3) throw std::invalid_argument("random_box: dim is 2 or 3");
     std::mt19937_64 rng(seed);
     Scene scene;
     scene.dim = dim;
-    add_box(scene, box_side);
-    const std::int64_t s = std::max<std::int64_t>(2, box_side / integer_root(n, dim));
+    add_box(scene, side);
+    const std::int64_t s = std::max<std::int64_t>(2, side / integer_root(n, dim));
     for (std::int64_t i = 0; i < n; ++i) {
         const int axis = static_cast<int>(uniform(rng, 0, dim - 1));
-        const std::int64_t offset = uniform(rng, 1, box_side - 1);
+        const std::int64_t offset = uniform(rng, 1, side - 1);
         Extent extent;
         for (int j = 0; j < dim; ++j) {
             if (j == axis) continue;
             const std::int64_t length = uniform(rng, s / 2, s);
-            const std::int64_t lo = uniform(rng, 0, box_side - length);
+            const std::int64_t lo = uniform(rng, 0, side - length);
             extent.emplace_back(whole(lo), whole(lo + length));
         }
         scene.add_mirror(axis, whole(offset), extent);
     }
     std::int64_t start[3] = {0, 0, 0};
     do
-        for (int j = 0; j < dim; ++j) start[j] = uniform(rng, 1, box_side - 1);
+        for (int j = 0; j < dim; ++j) start[j] = uniform(rng, 1, side - 1);
     while (on_element(scene, start));
     const std::int64_t direction[3] = {1001, 1000, dim == 3 ? 999 : 0};
     // The lattice factors f_j = lcm(u) / u_j, modulo 2.
@@ -69,7 +70,7 @@ Scene random_box(int dim, std::int64_t n, std::uint64_t seed) {
     if (f[0] == 0 && f[1] == 0) throw std::logic_error("random_box: f_0 and f_1 are both even");
     const int odd_axis = f[0] ? 0 : 1;
     std::int64_t target[3] = {0, 0, 0};
-    for (int j = 0; j < dim; ++j) target[j] = uniform(rng, 2, box_side - 2);
+    for (int j = 0; j < dim; ++j) target[j] = uniform(rng, 2, side - 2);
     auto parity = [&](const std::int64_t(&x)[3]) { return (f[0] * x[0] + f[1] * x[1]) % 2; };
     if (parity(target) == parity(start)) ++target[odd_axis];
     set_point(scene.start, start, dim);

@@ -39,7 +39,10 @@ using orthoray::uniform;
 // changes (each step moves every coordinate by the same t). The target is
 // chosen with f_0 x_0 + f_1 x_1 of the other parity than the start's. With
 // no absorbers either, a run only ends at its step cap (or in a cycle).
-Scene random_box(int dim, std::int64_t n, std::uint64_t seed);
+//
+// `side` replaces box_side for benches whose coordinates grow (up to 10^18;
+// the library's `random` family stops at 2^40).
+Scene random_box(int dim, std::int64_t n, std::uint64_t seed, std::int64_t side = box_side);
 
 // The m x n mirror box shot from the corner (0, 0) at 45 degrees, target
 // (m, n). With gcd(m, n) = 1 the ray first meets a corner after m + n - 2

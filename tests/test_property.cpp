@@ -2,6 +2,7 @@
 // all three integer paths and with both cycle detectors), the reference tracer and
 // the explicit state graph agree on answer, reason and reflections, and every
 // certificate the default engine writes passes the independent verifier.
+#include "support/case_count.hpp"
 #include "support/random_scene.hpp"
 
 #include "orthoray/certificate.hpp"
@@ -119,24 +120,24 @@ void run_family(std::uint64_t seed, int count, const test::RandomSceneShape& sha
 TEST_CASE("engines, state graph and verifier agree on random 2D scenes", "[property]") {
     Tally tally;
     test::RandomSceneShape rational{2, 12, 6, 3, 3}, integral{2, 12, 6, 1, 2};
-    run_family(20261122, 1500, rational, tally);
-    run_family(424242, 1500, integral, tally);
+    run_family(20261122, test::case_count(1500), rational, tally);
+    run_family(424242, test::case_count(1500), integral, tally);
     WARN("2D: " << tally.summary());
-    CHECK(tally.scenes == 3000);
+    CHECK(tally.scenes == test::case_count(1500) * 2);
     // The families must exercise every outcome and the graph cross-check.
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
-        CHECK(tally.by_reason[static_cast<int>(r)] > 100);
-    CHECK(tally.graph_checked > 1500);
+        CHECK(tally.by_reason[static_cast<int>(r)] > test::case_count(100));
+    CHECK(tally.graph_checked > test::case_count(1500));
 }
 
 TEST_CASE("engines, state graph and verifier agree on random 3D scenes", "[property]") {
     Tally tally;
     test::RandomSceneShape rational{3, 12, 4, 2, 2}, integral{3, 10, 3, 1, 1};
-    run_family(77, 1000, rational, tally);
-    run_family(31337, 1000, integral, tally);
+    run_family(77, test::case_count(1000), rational, tally);
+    run_family(31337, test::case_count(1000), integral, tally);
     WARN("3D: " << tally.summary());
-    CHECK(tally.scenes == 2000);
+    CHECK(tally.scenes == test::case_count(1000) * 2);
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
-        CHECK(tally.by_reason[static_cast<int>(r)] > 30);
-    CHECK(tally.graph_checked > 500);
+        CHECK(tally.by_reason[static_cast<int>(r)] > test::case_count(30));
+    CHECK(tally.graph_checked > test::case_count(500));
 }

@@ -262,28 +262,33 @@ IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> p
         }
     }
 
-    // Rotate so that x is 0; an image that wraps around is cut in two.
+    // Rotate so that x is 0: the pieces in domain order from x's on, then
+    // those before it (no sort needed); an image that wraps around is cut
+    // in two.
     IntervalExchange exchange;
+    exchange.pieces.reserve(closed.size() + 1);
+    const auto first = std::find_if(closed.begin(), closed.end(),
+                                    [&](const RawPiece& p) { return p.start == raw_first; });
+    std::rotate(closed.begin(), first, closed.end());
     for (RawPiece& p : closed) {
         ExchangePiece q;
         q.start = modulo(p.start - raw_first, n);
         q.image = modulo(p.image - raw_first, n);
-        q.length = p.length;
+        q.length = std::move(p.length);
         q.kind = p.kind;
         q.hit = p.hit;
+        std::optional<ExchangePiece> rest;
         if (q.image + q.length > n) {
-            ExchangePiece rest = q;
+            rest = q;
             const Integer head = n - q.image;
-            rest.start += head;
-            rest.length -= head;
-            rest.image = 0;
+            rest->start += head;
+            rest->length -= head;
+            rest->image = 0;
             q.length = head;
-            exchange.pieces.push_back(std::move(rest));
         }
         exchange.pieces.push_back(std::move(q));
+        if (rest) exchange.pieces.push_back(std::move(*rest));
     }
-    std::sort(exchange.pieces.begin(), exchange.pieces.end(),
-              [](const ExchangePiece& a, const ExchangePiece& b) { return a.start < b.start; });
     if (exchange.pieces.front().start != 0 || exchange.pieces.front().length != 1)
         throw std::logic_error("x is not a piece of its own");
     exchange.modulus = layout.modulus();

@@ -1,5 +1,7 @@
 #include "induction/rauzy_induction.hpp"
 
+#include "lattice/lattice_int.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <vector>
@@ -10,8 +12,12 @@ namespace {
 constexpr std::size_t none = ~std::size_t{0};
 
 // A piece of the induced map: its length, its return time, its first event.
+// Every one of these numbers, and every product the steps form, is at most
+// N: a return time counts distinct states. So machine integers serve
+// whenever N fits them.
+template <class Int>
 struct Piece {
-    Integer length, ret, offset;
+    Int length, ret, offset;
     EventKind event = EventKind::none;
 };
 
@@ -55,7 +61,8 @@ private:
 };
 
 // `a` becomes "a, then b": the first event of a if it has one, else b's.
-void then(Piece& a, const Piece& b) {
+template <class Int>
+void then(Piece<Int>& a, const Piece<Int>& b) {
     if (a.event == EventKind::none && b.event != EventKind::none) {
         a.event = b.event;
         a.offset = a.ret + b.offset;
@@ -64,7 +71,8 @@ void then(Piece& a, const Piece& b) {
 }
 
 // `a` becomes "b, `times` times, then a" (b's return time is r_b).
-void after(Piece& a, const Piece& b, const Integer& times) {
+template <class Int>
+void after(Piece<Int>& a, const Piece<Int>& b, const Int& times) {
     if (b.event != EventKind::none) {
         a.event = b.event;
         a.offset = b.offset;
@@ -75,7 +83,8 @@ void after(Piece& a, const Piece& b, const Integer& times) {
 }
 
 // `a` becomes "a, then b `times` times".
-void then_repeated(Piece& a, const Piece& b, const Integer& times) {
+template <class Int>
+void then_repeated(Piece<Int>& a, const Piece<Int>& b, const Int& times) {
     if (a.event == EventKind::none && b.event != EventKind::none) {
         a.event = b.event;
         a.offset = a.ret + b.offset;
@@ -83,15 +92,14 @@ void then_repeated(Piece& a, const Piece& b, const Integer& times) {
     a.ret += times * b.ret;
 }
 
-} // namespace
-
-std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* sink,
-                                   const std::function<bool(std::uint64_t)>& stop) {
+template <class Int>
+std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink* sink,
+                                      const std::function<bool(std::uint64_t)>& stop) {
     const std::size_t k = exchange.pieces.size();
-    std::vector<Piece> piece(k);
+    std::vector<Piece<Int>> piece(k);
     for (std::size_t i = 0; i < k; ++i) {
         const ExchangePiece& e = exchange.pieces[i];
-        piece[i].length = e.length;
+        piece[i].length = lattice::from_integer<Int>(e.length);
         piece[i].ret = 1;
         piece[i].offset = 0;
         piece[i].event = e.hit                           ? EventKind::hit
@@ -108,7 +116,7 @@ std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* s
     Order domain(by_start), image(by_image);
 
     OrbitOfFirst orbit;
-    Integer total, rounds;
+    Int total, rounds;
     std::vector<std::size_t> walked;
     for (std::uint64_t iteration = 1;; ++iteration) {
         if ((iteration & 0xfff) == 0 && stop && stop(orbit.steps)) return std::nullopt;
@@ -122,7 +130,9 @@ std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* s
             image.remove(d);
             continue;
         }
-        const int order = cmp(piece[d].length, piece[r].length);
+        const int order = piece[d].length < piece[r].length   ? -1
+                          : piece[r].length < piece[d].length ? 1
+                                                              : 0;
         if (order == 0) {
             ++orbit.steps;
             if (sink) sink->equal(r, d);
@@ -158,7 +168,10 @@ std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* s
             piece[w].length -= rounds * total;
             ++orbit.steps;
             ++orbit.rounds;
-            if (sink) top ? sink->top_cycle(w, rounds) : sink->bottom_cycle(w, rounds);
+            if (sink) {
+                const Integer count = lattice::to_integer(rounds);
+                top ? sink->top_cycle(w, count) : sink->bottom_cycle(w, count);
+            }
             continue;
         }
         // Single steps against every loser whose running total stays below
@@ -173,7 +186,7 @@ std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* s
                 image.insert_after(q, w);
             } else {
                 if (sink) sink->bottom(w, q);
-                after(piece[q], piece[w], 1);
+                after(piece[q], piece[w], Int(1));
                 domain.remove(q);
                 domain.insert_after(q, w);
             }
@@ -181,9 +194,20 @@ std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* s
         }
     }
     orbit.event = piece[0].event;
-    orbit.offset = piece[0].offset;
-    orbit.period = piece[0].ret;
+    orbit.offset = lattice::to_integer(piece[0].offset);
+    orbit.period = lattice::to_integer(piece[0].ret);
     return orbit;
+}
+
+} // namespace
+
+std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* sink,
+                                   const std::function<bool(std::uint64_t)>& stop) {
+    if (exchange.size < lattice::int64_limit())
+        return induce_on<std::int64_t>(exchange, sink, stop);
+    if (exchange.size < lattice::int128_limit())
+        return induce_on<lattice::int128_t>(exchange, sink, stop);
+    return induce_on<Integer>(exchange, sink, stop);
 }
 
 } // namespace orthoray::induction
