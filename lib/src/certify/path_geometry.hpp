@@ -31,12 +31,16 @@ inline Event first_met(const Scene& scene, const Vector& p, const Vector& v) {
         const int k = e.axis;
         // A ray parallel to the element's plane never meets it, even inside it.
         if (sgn(v[k]) == 0) continue;
-        t = (e.lo[k] - p[k]) / v[k];
-        // Nothing happens at t = 0 (a start point on a mirror does not reflect).
-        if (sgn(t) <= 0) continue;
+        // Nothing happens at t = 0 (a start point on a mirror does not reflect):
+        // t = (offset - p_k) / v_k must be positive, which its sign tells
+        // before the division (about half the elements are behind the ray).
+        q = e.lo[k] - p[k];
+        if (sgn(q) * sgn(v[k]) <= 0) continue;
+        t = q / v[k];
         if (best.met && t > best.t) continue;
         bool inside = true;
         for (int j = 0; j < scene.dim && inside; ++j) {
+            if (j == k) continue; // on the element's plane by the choice of t
             q = p[j] + t * v[j];
             inside = e.lo[j] <= q && q <= e.hi[j]; // closed: edges and corners count
         }
