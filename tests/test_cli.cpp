@@ -602,7 +602,7 @@ TEST_CASE("the default engine answers a 2^61 box by induction, in full", "[cli][
     CHECK(j["reflections"].dump() == "4611686018427387903");
 }
 
-TEST_CASE("--max-steps holds for the induction engine too", "[cli][induction]") {
+TEST_CASE("a step limit holds for the induction engine too", "[cli][induction]") {
     // 65,535 reflections are needed; the induction knows at once, and the
     // limit then stops a simulation at exactly 1,000, as without induction.
     TempDir dir;

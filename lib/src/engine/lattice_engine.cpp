@@ -296,7 +296,9 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                 // Auto: step on the tables about as long as inducing would
                 // take, then induce; no answer costs more than twice the
                 // faster engine's time.
-                const std::uint64_t budget = options.engine == Engine::induction
+                // A certificate's path prefix is checked point by point, so
+                // with one the induction starts right away.
+                const std::uint64_t budget = options.engine == Engine::induction || options.path
                                                  ? 0
                                                  : induction_budget(table->size(), ls.magnitude);
                 if (run.advance_in_chunks(by_table, run.reflections() + budget))
