@@ -36,7 +36,7 @@ Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<I
 
     Answer answer;
     answer.engine = "induction";
-    answer.arithmetic = "gmp";
+    answer.arithmetic = orbit->arithmetic;
     answer.shooter = "pieces";
     switch (orbit->event) {
     case EventKind::none:

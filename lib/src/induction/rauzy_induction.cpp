@@ -193,6 +193,7 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
             piece[w].length -= piece[q].length;
         }
     }
+    orbit.arithmetic = lattice::arithmetic_name(Int{});
     orbit.event = piece[0].event;
     orbit.offset = lattice::to_integer(piece[0].offset);
     orbit.period = lattice::to_integer(piece[0].ret);

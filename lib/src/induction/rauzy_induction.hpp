@@ -51,6 +51,7 @@ struct OrbitOfFirst {
     Integer period;           // the return time of x (meaningful without an event)
     std::uint64_t steps = 0;  // steps taken, a cycle step counting once
     std::uint64_t rounds = 0; // of which accelerated (cycle) steps
+    const char* arithmetic = ""; // the integers it ran on: "int64", "int128" or "gmp"
 };
 
 // Decides the orbit of x = 0. `stop` is asked every few thousand steps and
