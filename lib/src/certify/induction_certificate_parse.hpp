@@ -1,0 +1,70 @@
+// The statements of an induction certificate after `method`, read into
+// plain data (docs/induction-certificates.md): the exchange, the steps one
+// at a time, and the verdict. Pure parsing: the checks are in
+// induction_verifier.cpp.
+#pragma once
+
+#include "orthoray/answer.hpp"
+#include "orthoray/number.hpp"
+#include "orthoray/scene.hpp"
+
+#include "certify/certificate_reader.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace orthoray::certify::induction_check {
+
+enum class Kind { reflect, escape, absorbed };
+
+enum class StepKind { top, bottom, equal, invariant, top_cycle, bottom_cycle };
+
+struct TransversalSpec {
+    int a = 0; // 0: the line X = C, 1: the line Y = C
+    Integer c, lo, hi;
+    int dx = 1, dy = 1;
+};
+
+struct PieceSpec {
+    Integer start, length, image;
+    Kind kind = Kind::reflect;
+    bool hit = false;
+};
+
+struct StepSpec {
+    StepKind kind = StepKind::top;
+    Integer first, second;
+};
+
+// The step as written, for messages.
+inline std::string step_text(const StepSpec& s) {
+    static constexpr const char* names[] = {"top",       "bottom",    "equal",
+                                            "invariant", "top-cycle", "bottom-cycle"};
+    std::string text =
+        std::string("step ") + names[static_cast<int>(s.kind)] + " " + s.first.get_str();
+    if (s.kind != StepKind::invariant) text += " " + s.second.get_str();
+    return text;
+}
+
+struct Parsed {
+    Vector v1;
+    Rational sx, sy;
+    Integer modulus;
+    std::vector<TransversalSpec> transversals;
+    Integer first_t, first_i;
+    std::vector<PieceSpec> pieces;
+    std::size_t steps = 0; // how many `step` lines were read
+    std::string answer;
+    Reason reason = Reason::cycle;
+    Integer reflections, period;
+};
+
+// Everything up to the last piece; `in` is left on the statement after it.
+Parsed parse_exchange(CertificateReader& in, int dim);
+// The `step` statement `in` is on.
+StepSpec parse_step(const CertificateReader& in);
+// The verdict from `answer` to `end` (the stream must end there) into `p`.
+void parse_verdict(CertificateReader& in, Parsed& p);
+
+} // namespace orthoray::certify::induction_check
