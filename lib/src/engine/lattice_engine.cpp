@@ -260,9 +260,10 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     const bool tables =
         induce || options.shooter == Shooter::automatic || options.shooter == Shooter::pieces;
     if (tables) {
-        const std::uint64_t first = induce && options.engine == Engine::induction ? 1
-                                    : options.shooter == Shooter::pieces          ? (induce ? 1 : 0)
-                                                                         : grid_phase(grid.size());
+        // Reflections on the grid first: the grid phase, or none when the
+        // tables are asked for at once; the induction needs state 1 taken.
+        std::uint64_t first = options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
+        if (induce && (options.engine == Engine::induction || first == 0)) first = 1;
         auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
             return grid.shoot(s.p, s.negative);
         };
