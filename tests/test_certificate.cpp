@@ -2,6 +2,8 @@
 // the simulation engines and the certificate verifies; every kind of
 // tampering is rejected; partial (limit) certificates are never valid; and
 // the writer's text is exactly the documented format.
+#include "support/certificate_outcome.hpp"
+
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
@@ -74,22 +76,8 @@ Certified certify(const Scene& scene, Engine engine) {
     return certify(scene, options);
 }
 
-// What verify says; a malformed certificate (InputError) is not valid.
-struct Outcome {
-    bool valid = false;
-    bool input_error = false;
-    std::string message;
-};
-
-Outcome verify(const Scene& scene, const std::string& text) {
-    std::istringstream in(text);
-    try {
-        const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "<test>");
-        return {verdict.valid, false, verdict.message};
-    } catch (const orthoray::InputError& error) {
-        return {false, true, error.what()};
-    }
-}
+using orthoray::test::Outcome;
+using orthoray::test::verify;
 
 bool starts_with(const std::string& text, const std::string& prefix) {
     return text.compare(0, prefix.size(), prefix) == 0;

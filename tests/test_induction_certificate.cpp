@@ -2,6 +2,7 @@
 // certificates for tiny scenes verify, and each tampering is rejected for
 // the reason it introduces (the message is matched, so a check that never
 // fires fails the test).
+#include "support/certificate_outcome.hpp"
 #include "support/random_scene.hpp"
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
@@ -27,21 +28,8 @@ namespace {
 using orthoray::Rational;
 using orthoray::Scene;
 
-struct Outcome {
-    bool valid = false;
-    bool input_error = false;
-    std::string message;
-};
-
-Outcome verify(const Scene& scene, const std::string& text) {
-    std::istringstream in(text);
-    try {
-        const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "<test>");
-        return {verdict.valid, false, verdict.message};
-    } catch (const orthoray::InputError& error) {
-        return {false, true, error.what()};
-    }
-}
+using orthoray::test::Outcome;
+using orthoray::test::verify;
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);
@@ -919,9 +907,7 @@ TEST_CASE("brute-force induction certificates of random scenes verify", "[induct
     int by_reason[4] = {};
     for (int round = 0; round < 4000 && verified < 400; ++round) {
         Scene scene = orthoray::test::random_scene(rng, shape);
-        scene.target = std::bernoulli_distribution(0.5)(rng)
-                           ? orthoray::test::target_on_trajectory(rng, scene)
-                           : orthoray::test::random_point(rng, shape);
+        scene.target = orthoray::test::random_target(rng, scene, shape);
         orthoray::SolveOptions o;
         o.engine = orthoray::Engine::reference;
         o.max_steps = 100000;
@@ -1174,9 +1160,7 @@ TEST_CASE("the induction engine's certificates of random scenes verify, tampered
         int got = 0;
         for (int attempt = 0; got < family.goal && attempt < 20 * family.goal; ++attempt) {
             Scene scene = orthoray::test::random_scene(rng, family.shape);
-            scene.target = std::bernoulli_distribution(0.5)(rng)
-                               ? orthoray::test::target_on_trajectory(rng, scene)
-                               : orthoray::test::random_point(rng, family.shape);
+            scene.target = orthoray::test::random_target(rng, scene, family.shape);
             const bool json = std::bernoulli_distribution(0.25)(rng);
             std::stringstream out;
             orthoray::CertificateWriter writer(out, scene,

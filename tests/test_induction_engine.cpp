@@ -65,9 +65,7 @@ void run_family(std::uint64_t seed, int count, test::RandomSceneShape shape, Tal
     const int goal = tally.induced + count;
     for (int attempt = 0; tally.induced < goal && attempt < 10 * count; ++attempt) {
         Scene scene = test::random_scene(rng, shape);
-        scene.target = std::bernoulli_distribution(0.5)(rng)
-                           ? test::target_on_trajectory(rng, scene)
-                           : test::random_point(rng, shape);
+        scene.target = test::random_target(rng, scene, shape);
         check_scene(scene, tally);
     }
 }

@@ -119,4 +119,9 @@ Vector target_on_trajectory(std::mt19937_64& rng, const Scene& scene) {
     return x;
 }
 
+Vector random_target(std::mt19937_64& rng, const Scene& scene, const RandomSceneShape& shape) {
+    return std::bernoulli_distribution(0.5)(rng) ? target_on_trajectory(rng, scene)
+                                                 : random_point(rng, shape);
+}
+
 } // namespace orthoray::test

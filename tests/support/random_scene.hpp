@@ -28,4 +28,8 @@ Vector target_on_trajectory(std::mt19937_64& rng, const Scene& scene);
 // A random point in the scene's range (usually off the trajectory).
 Vector random_point(std::mt19937_64& rng, const RandomSceneShape& shape);
 
+// The property tests' target: half the time on the trajectory, otherwise
+// a random point.
+Vector random_target(std::mt19937_64& rng, const Scene& scene, const RandomSceneShape& shape);
+
 } // namespace orthoray::test
