@@ -24,7 +24,7 @@ struct StateAt {
 
 StateAt state_at(const IntervalExchange& e, const Integer& c) {
     const Integer raw_first = e.transversals[e.first_transversal].start + e.first_index;
-    const Integer raw = modulo(c + raw_first, e.size);
+    const Integer raw = floor_mod(c + raw_first, e.size);
     std::size_t i = 0;
     while (!(e.transversals[i].start <= raw &&
              raw < e.transversals[i].start + e.transversals[i].count))

@@ -1,11 +1,12 @@
 #include "bounds/line_invariant.hpp"
 
-#include "lattice/lattice_int.hpp" // floor_div
+#include "lattice/lattice_int.hpp" // floor_div, floor_mod
 
 namespace orthoray::bounds {
 namespace {
 
 using lattice::floor_div;
+using lattice::floor_mod;
 
 bool congruent(const Integer& a, const Integer& b, const Integer& G) {
     return G == 0 ? a == b : Integer((a - b) % G) == 0;
@@ -32,8 +33,7 @@ Integer count_congruent_both(const Integer& lo, const Integer& hi, const Integer
     Integer inverse = 0, t = 0;
     if (m != 1) {
         mpz_invert(inverse.get_mpz_t(), a.get_mpz_t(), m.get_mpz_t());
-        t = Integer(d / g) * inverse;
-        mpz_fdiv_r(t.get_mpz_t(), t.get_mpz_t(), m.get_mpz_t());
+        t = floor_mod(Integer(d / g) * inverse, m);
     }
     return count_congruent(lo, hi, r1 + G1 * t, G1 * m);
 }

@@ -37,8 +37,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
         const int axis = element.axis;
         mirrors.push_back({axis, element.lo[axis], element.lo[1 - axis], element.hi[1 - axis], e});
         // A reflection on {axis = c} moves w by +-2c, so w mod gcd(2c) is invariant.
-        mpz_gcd(modulus_.get_mpz_t(), modulus_.get_mpz_t(),
-                Integer(2 * element.lo[axis]).get_mpz_t());
+        modulus_ = gcd(modulus_, Integer(2 * element.lo[axis]));
     }
     w_first_ = sign_of(x_negative, 1) * x[1] - sign_of(x_negative, 0) * x[0];
     std::sort(mirrors.begin(), mirrors.end(), [](const Mirror& a, const Mirror& b) {
@@ -124,7 +123,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
                 t.first = u;
                 t.count = 1;
             } else {
-                t.first = segment.lo + modulo(u - segment.lo, modulus_);
+                t.first = segment.lo + floor_mod(u - segment.lo, modulus_);
                 if (t.first > segment.hi) continue;
                 t.count = (segment.hi - t.first) / modulus_ + 1;
             }
@@ -154,7 +153,8 @@ std::optional<std::pair<std::size_t, Integer>> ExchangeLayout::locate(const Inte
             transversal_of_[static_cast<std::size_t>(after - 1 - segments_.begin()) * 4 + negative];
         if (id == npos) return std::nullopt;
         const Transversal& t = transversals_[id];
-        if (modulus_ == 0 ? u != t.first : modulo(u - t.first, modulus_) != 0) return std::nullopt;
+        if (modulus_ == 0 ? u != t.first : floor_mod(u - t.first, modulus_) != 0)
+            return std::nullopt;
         return std::make_pair(id, number_of(t, modulus_, u));
     }
     return std::nullopt;
@@ -166,7 +166,7 @@ std::optional<std::pair<Integer, Integer>> class_range(const Transversal& t, con
         if (t.first < from || t.first > to) return std::nullopt;
         return std::make_pair(t.first, t.first);
     }
-    Integer lo = from + modulo(t.first - from, modulus);
+    Integer lo = from + floor_mod(t.first - from, modulus);
     if (lo > to) return std::nullopt;
     Integer hi = lo + (to - lo) / modulus * modulus;
     return std::make_pair(std::move(lo), std::move(hi));
@@ -272,8 +272,8 @@ IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> p
     std::rotate(closed.begin(), first, closed.end());
     for (RawPiece& p : closed) {
         ExchangePiece q;
-        q.start = modulo(p.start - raw_first, n);
-        q.image = modulo(p.image - raw_first, n);
+        q.start = floor_mod(p.start - raw_first, n);
+        q.image = floor_mod(p.image - raw_first, n);
         q.length = std::move(p.length);
         q.kind = p.kind;
         q.hit = p.hit;

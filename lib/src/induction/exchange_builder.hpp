@@ -35,12 +35,7 @@
 
 namespace orthoray::induction {
 
-// The mathematical modulus: a mod m in [0, m) for m > 0.
-inline Integer modulo(const Integer& a, const Integer& m) {
-    Integer r;
-    mpz_fdiv_r(r.get_mpz_t(), a.get_mpz_t(), m.get_mpz_t());
-    return r;
-}
+using lattice::floor_mod;
 
 class ExchangeLayout {
 public:

@@ -72,6 +72,12 @@ inline Integer floor_div(const Integer& a, const Integer& b) {
     mpz_fdiv_q(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
     return q;
 }
+// a - b * floor(a / b), in [0, b) for b > 0.
+inline Integer floor_mod(const Integer& a, const Integer& b) {
+    Integer r;
+    mpz_fdiv_r(r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+    return r;
+}
 
 // Cell indices are small (the grid has O(n) cells), whatever Int is.
 template <class Int>
