@@ -155,7 +155,7 @@ std::vector<Instance> instances(bool quick) {
                                    f.direction_size = 3;
                                    f.seed = seed;
                                    Scene scene = generate_random(f).scene;
-                                   scene.target = Vector{-1, -1, dim == 3 ? -1 : 0};
+                                   scene.target() = Vector{-1, -1, dim == 3 ? -1 : 0};
                                    return scene;
                                },
                                dim == 3});

@@ -48,9 +48,9 @@ public:
         }
         double length = 0;
         for (int j = 0; j < D; ++j) {
-            start_[j] = scene.start[j].get_d();
-            target_[j] = scene.target[j].get_d();
-            dir_[j] = scene.direction[j].get_d();
+            start_[j] = scene.ray().start[j].get_d();
+            target_[j] = scene.target()[j].get_d();
+            dir_[j] = scene.ray().direction[j].get_d();
             length += dir_[j] * dir_[j];
             grow(start_[j]);
             grow(target_[j]);

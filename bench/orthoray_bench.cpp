@@ -633,7 +633,7 @@ Scene disagreement_scene(const Family& family, std::uint64_t index) {
     if (kind == 0) {
         const std::int64_t side = std::int64_t{1} << family.shape.side_log_hi;
         for (int j = 0; j < scene.dim; ++j)
-            scene.target[j] = Rational(Integer(static_cast<long>(uniform(rng, 0, side))));
+            scene.target()[j] = Rational(Integer(static_cast<long>(uniform(rng, 0, side))));
         return scene;
     }
     const std::uint64_t k = static_cast<std::uint64_t>(uniform(rng, 1, family.path_steps));
@@ -644,11 +644,11 @@ Scene disagreement_scene(const Family& family, std::uint64_t index) {
     (void)solve(scene, options);
     if (path.points.size() < 2) return scene; // ended before: the target stays at the start
     if (kind == 1) {
-        scene.target = path.points[1];
+        scene.target() = path.points[1];
     } else {
         for (int j = 0; j < 3; ++j) {
-            scene.target[j] = (path.points[0][j] + path.points[1][j]) / 2;
-            scene.target[j].canonicalize();
+            scene.target()[j] = (path.points[0][j] + path.points[1][j]) / 2;
+            scene.target()[j].canonicalize();
         }
     }
     return scene;
@@ -820,7 +820,7 @@ std::uint64_t scene_checksum(const Scene& scene) {
     for (const Element& e : scene.elements)
         for (int j = 0; j < scene.dim; ++j) add(e.lo[j]), add(e.hi[j]);
     for (int j = 0; j < scene.dim; ++j)
-        add(scene.start[j]), add(scene.direction[j]), add(scene.target[j]);
+        add(scene.ray().start[j]), add(scene.ray().direction[j]), add(scene.target()[j]);
     return h;
 }
 constexpr std::uint64_t expected_checksum_2d = 0xceac008fd3a2c256u,

@@ -73,9 +73,9 @@ Scene random_box(int dim, std::int64_t n, std::uint64_t seed, std::int64_t side)
     for (int j = 0; j < dim; ++j) target[j] = uniform(rng, 2, side - 2);
     auto parity = [&](const std::int64_t(&x)[3]) { return (f[0] * x[0] + f[1] * x[1]) % 2; };
     if (parity(target) == parity(start)) ++target[odd_axis];
-    set_point(scene.start, start, dim);
-    set_point(scene.target, target, dim);
-    set_point(scene.direction, direction, 3);
+    set_point(scene.ray().start, start, dim);
+    set_point(scene.target(), target, dim);
+    set_point(scene.ray().direction, direction, 3);
     return scene;
 }
 
@@ -99,9 +99,9 @@ Scene unit_square(std::int64_t p, std::int64_t q) {
     Scene scene;
     scene.dim = 2;
     add_box(scene, 8);
-    set_point(scene.start, {4, 2, 0}, 2);
-    set_point(scene.direction, {q, p, 0}, 2);
-    set_point(scene.target, {4, 4, 0}, 2);
+    set_point(scene.ray().start, {4, 2, 0}, 2);
+    set_point(scene.ray().direction, {q, p, 0}, 2);
+    set_point(scene.target(), {4, 4, 0}, 2);
     return scene;
 }
 
@@ -137,9 +137,9 @@ Scene random_small(std::mt19937_64& rng, int dim, const SmallShape& shape) {
         while (direction[j] == 0 && uniform(rng, 0, 7) != 0); // mostly no zero component
     }
     if (direction[0] == 0 && direction[1] == 0 && direction[2] == 0) direction[0] = 1;
-    set_point(scene.start, start, dim);
-    set_point(scene.direction, direction, 3);
-    set_point(scene.target, start, dim); // the caller chooses the target
+    set_point(scene.ray().start, start, dim);
+    set_point(scene.ray().direction, direction, 3);
+    set_point(scene.target(), start, dim); // the caller chooses the target
     return scene;
 }
 
@@ -149,9 +149,9 @@ Scene float_wrong_near_miss() {
     Scene scene;
     scene.dim = 2;
     scene.add_mirror(0, whole(999'999), {{whole(0), whole(999'998)}});
-    set_point(scene.start, {0, 0, 0}, 2);
-    set_point(scene.direction, {1'000'000, 999'999, 0}, 2);
-    set_point(scene.target, {1'000'000, 999'999, 0}, 2);
+    set_point(scene.ray().start, {0, 0, 0}, 2);
+    set_point(scene.ray().direction, {1'000'000, 999'999, 0}, 2);
+    set_point(scene.target(), {1'000'000, 999'999, 0}, 2);
     return scene;
 }
 

@@ -65,9 +65,9 @@ TEST_CASE("the line modulus uses offset differences, so it does not depend on th
     s.add_mirror(0, 16, {{4, 10}});
     s.add_mirror(1, 4, {{10, 16}});
     s.add_mirror(1, 10, {{10, 16}});
-    s.start = {11, 5, 0};
-    s.direction = {1, 1, 0};
-    s.target = {0, 0, 0};
+    s.ray().start = {11, 5, 0};
+    s.ray().direction = {1, 1, 0};
+    s.target() = {0, 0, 0};
     const StateBounds b = compute_bounds(s);
     CHECK(b.points == 24);
     CHECK(b.line_modulus[0] == 12);
@@ -83,8 +83,8 @@ TEST_CASE("overlapping and crossing mirrors count each point once in 2D", "[boun
     s.add_mirror(0, 0, {{0, 4}});
     s.add_mirror(0, 0, {{2, 6}});  // overlaps the first: the union is y in [0, 6]
     s.add_mirror(1, 3, {{-2, 2}}); // crosses x = 0 at (0, 3)
-    s.start = {1, 0, 0};
-    s.direction = {1, 1, 0};
+    s.ray().start = {1, 0, 0};
+    s.ray().direction = {1, 1, 0};
     const StateBounds b = compute_bounds(s);
     CHECK(b.points == 7 + 5 - 1);
 }
@@ -159,7 +159,7 @@ TEST_CASE("no orbit exceeds the bounds: the property tests' random scenes", "[bo
         shape.dim = i % 2 ? 3 : 2;
         shape.max_denominator = i % 3 + 1;
         Scene s = test::random_scene(rng, shape);
-        s.target = test::random_point(rng, shape);
+        s.target() = test::random_point(rng, shape);
         check_theorem(s);
     }
 }
@@ -262,7 +262,7 @@ TEST_CASE("the state graph's states fit the lattice bound", "[bounds]") {
         shape.dim = i % 2 ? 3 : 2;
         shape.max_denominator = 1;
         Scene s = test::random_scene(rng, shape);
-        s.target = test::random_point(rng, shape);
+        s.target() = test::random_point(rng, shape);
         const std::optional<StateGraphReport> graph = explore_state_graph(s, 20'000);
         if (!graph) continue;
         const StateBounds b = compute_bounds(s, false);

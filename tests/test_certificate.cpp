@@ -541,12 +541,12 @@ TEST_CASE("a certificate is rejected when the scene changes under it", "[certifi
         INFO("instance " << instance.name);
         for (int axis = 0; axis < instance.scene.dim; ++axis) {
             Scene moved = instance.scene;
-            moved.start[axis] += one_seventh;
+            moved.ray().start[axis] += one_seventh;
             expect_rejected(moved, c.text, "start moved on axis " + std::to_string(axis));
             // (When the target is the start, any direction reaches it at once.)
             Scene turned = instance.scene;
-            if (turned.direction[axis] != 0 && turned.target != turned.start) {
-                turned.direction[axis] = -turned.direction[axis];
+            if (turned.ray().direction[axis] != 0 && turned.target() != turned.ray().start) {
+                turned.ray().direction[axis] = -turned.ray().direction[axis];
                 expect_rejected(turned, c.text,
                                 "direction negated on axis " + std::to_string(axis));
             }

@@ -47,9 +47,9 @@ void check_box_corner(const Integer& m, const Integer& n, Arithmetic arithmetic)
     const Integer k = m / g + n / g - 2;
     const bool x_far = Integer(n / g) % 2 != 0, y_far = Integer(m / g) % 2 != 0;
     Scene s = box(m, n);
-    s.start = {0, 0, 0};
-    s.direction = {1, 1, 0};
-    s.target = {x_far ? m : Integer(0), y_far ? n : Integer(0), 0};
+    s.ray().start = {0, 0, 0};
+    s.ray().direction = {1, 1, 0};
+    s.target() = {x_far ? m : Integer(0), y_far ? n : Integer(0), 0};
     Answer a = solve_with(s, Engine::lattice, arithmetic);
     REQUIRE(a.reason == Reason::hit);
     REQUIRE(a.reflections == k);
@@ -58,7 +58,7 @@ void check_box_corner(const Integer& m, const Integer& n, Arithmetic arithmetic)
     for (const Integer& x : {Integer(0), m})
         for (const Integer& y : {Integer(0), n}) {
             if ((x == 0 && y == 0) || ((x == m) == x_far && (y == n) == y_far)) continue;
-            s.target = {x, y, 0};
+            s.target() = {x, y, 0};
             a = solve_with(s, Engine::lattice, arithmetic);
             REQUIRE(a.reason == Reason::cycle);
             REQUIRE(a.reflections == 2 * (k + 1));
@@ -82,16 +82,16 @@ TEST_CASE("corner shot in boxes beyond 64 bits", "[closed-form][big]") {
             check_box_corner(a * big + a, b * big + b, Arithmetic::automatic); // g = big + 1
         }
     Scene s = box(3 * big, 5 * big);
-    s.direction = {1, 1, 0};
-    s.target = {3 * big, 5 * big, 0};
+    s.ray().direction = {1, 1, 0};
+    s.target() = {3 * big, 5 * big, 0};
     CHECK(solve_with(s).arithmetic == "int128"); // 5 * 2^100 < 2^123
     CHECK(solve_with(box(3, 5)).arithmetic == "int64");
     const Integer huge = Integer(1) << 130;
     for (int a = 1; a <= 5; ++a)
         for (int b = 1; b <= 5; ++b) check_box_corner(a * huge, b * huge, Arithmetic::automatic);
     s = box(3 * huge, 5 * huge);
-    s.direction = {1, 1, 0};
-    s.target = {3 * huge, 5 * huge, 0};
+    s.ray().direction = {1, 1, 0};
+    s.target() = {3 * huge, 5 * huge, 0};
     CHECK(solve_with(s).arithmetic == "gmp");
 }
 
@@ -100,8 +100,8 @@ TEST_CASE("the reference tracer agrees with the closed form", "[closed-form]") {
         for (int n = 1; n <= 9; ++n) {
             Integer g = gcd(m, n), k = m / g + n / g - 2;
             Scene s = box(m, n);
-            s.direction = {1, 1, 0};
-            s.target = {Integer(n / g) % 2 != 0 ? m : 0, Integer(m / g) % 2 != 0 ? n : 0, 0};
+            s.ray().direction = {1, 1, 0};
+            s.target() = {Integer(n / g) % 2 != 0 ? m : 0, Integer(m / g) % 2 != 0 ? n : 0, 0};
             Answer a = solve_with(s, Engine::reference);
             REQUIRE(a.reason == Reason::hit);
             REQUIRE(a.reflections == k);
@@ -122,14 +122,14 @@ TEST_CASE("rational slope in the unit square has period 2(p + q)", "[closed-form
                 Scene s = box(side, side);
                 Rational x0(1, 3), y0(2, 7);
                 if (Rational(q * x0 - p * y0).get_den() == 1) y0 = Rational(3, 11);
-                s.start = {x0 * side, y0 * side, 0};
-                s.direction = {p, q, 0};
-                s.target = {0, 0, 0};
+                s.ray().start = {x0 * side, y0 * side, 0};
+                s.ray().direction = {p, q, 0};
+                s.target() = {0, 0, 0};
                 const Answer a = solve_with(s);
                 REQUIRE(a.reason == Reason::cycle);
                 REQUIRE(a.reflections == 2 * (p + q));
                 // Negated components are the same billiard run backwards.
-                s.direction = {-p, -q, 0};
+                s.ray().direction = {-p, -q, 0};
                 REQUIRE(solve_with(s).reflections == 2 * (p + q));
             }
     }
@@ -152,7 +152,7 @@ TEST_CASE("3D corner shot in a box", "[closed-form]") {
             s.add_mirror(axis, 0, extent);
             s.add_mirror(axis, d[axis], extent);
         }
-        s.direction = {1, 1, 1};
+        s.ray().direction = {1, 1, 1};
         int l = 1;
         while (l % d[0] || l % d[1] || l % d[2]) ++l;
         int reflections = 0;
@@ -160,7 +160,7 @@ TEST_CASE("3D corner shot in a box", "[closed-form]") {
         bool coprime = gcd(d[0], d[1]) == 1 && gcd(d[1], d[2]) == 1 && gcd(d[0], d[2]) == 1;
         if (coprime)
             CHECK(reflections == d[0] * d[1] + d[1] * d[2] + d[2] * d[0] - d[0] - d[1] - d[2]);
-        for (int j = 0; j < 3; ++j) s.target[j] = (l / d[j]) % 2 ? d[j] : 0;
+        for (int j = 0; j < 3; ++j) s.target()[j] = (l / d[j]) % 2 ? d[j] : 0;
         Answer a = solve_with(s);
         INFO(d[0] << " x " << d[1] << " x " << d[2]);
         REQUIRE(a.reason == Reason::hit);

@@ -128,9 +128,9 @@ Scene mirror_box(int n, bool crowded) {
         }
         scene.add_mirror(axis, q(test::pick(rng, 1, side - 1)), extent);
     }
-    scene.start = {q(5001), q(5003), q(5007)};
-    scene.direction = {q(3), q(5), q(7)};
-    scene.target = {q(1), q(2), q(3)};
+    scene.ray().start = {q(5001), q(5003), q(5007)};
+    scene.ray().direction = {q(3), q(5), q(7)};
+    scene.target() = {q(1), q(2), q(3)};
     return scene;
 }
 

@@ -139,7 +139,7 @@ const std::string hallway_certificate = "orthoray-certificate 1\n"
 // Hit at offset 3: 4 reflections, on the segment (4, 0) to (5, 1).
 Scene hallway_hit() {
     Scene s = hallway();
-    s.target = {5, 1, 0};
+    s.target() = {5, 1, 0};
     return s;
 }
 
@@ -286,7 +286,8 @@ struct Brute {
 
 std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
                                        std::size_t max_states) {
-    if (scene.dim != 2 || scene.direction[0] == 0 || scene.direction[1] == 0) return std::nullopt;
+    if (scene.dim != 2 || scene.ray().direction[0] == 0 || scene.ray().direction[1] == 0)
+        return std::nullopt;
     orthoray::PathRecorder path;
     {
         orthoray::SolveOptions o;
@@ -294,7 +295,7 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
         o.max_steps = 1;
         o.path = &path;
         Scene probe = scene;
-        probe.target = Vector{Rational(1, 3) << 200, 0, 0};
+        probe.target() = Vector{Rational(1, 3) << 200, 0, 0};
         orthoray::solve(probe, o);
     }
     if (path.points.size() < 2) return std::nullopt; // escapes at once
@@ -304,7 +305,7 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
             e.lo[1] <= p1[1] && p1[1] <= e.hi[1])
             return std::nullopt;
     // The scale: |v_x| * SX = |v_y| * SY, then everything integral.
-    Rational sx = abs(scene.direction[1]), sy = abs(scene.direction[0]);
+    Rational sx = abs(scene.ray().direction[1]), sy = abs(scene.ray().direction[0]);
     Integer k = 1;
     auto need = [&](const Rational& value, const Rational& s) {
         const Rational q = value * s;
@@ -315,7 +316,7 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
             need(e.lo[j], j == 0 ? sx : sy);
             need(e.hi[j], j == 0 ? sx : sy);
         }
-    for (const Vector* v : {&scene.start, &p1, &scene.target})
+    for (const Vector* v : {&scene.ray().start, &p1, &scene.target()})
         for (int j = 0; j < 2; ++j) need((*v)[j], j == 0 ? sx : sy);
     sx *= k;
     sy *= k;
@@ -332,7 +333,7 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
                             e.kind == orthoray::ElementKind::absorber});
     }
     const Integer px = lat(p1[0], sx), py = lat(p1[1], sy);
-    const Integer tx = lat(scene.target[0], sx), ty = lat(scene.target[1], sy);
+    const Integer tx = lat(scene.target()[0], sx), ty = lat(scene.target()[1], sy);
     const int dx1 = sgn(v1[0]), dy1 = sgn(v1[1]);
     const Integer wx = dy1 * py - dx1 * px;
     Integer g = 0;
@@ -516,8 +517,8 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
     }
     std::ostringstream out;
     out << "orthoray-certificate 1\ndim 2\n";
-    out << "point " << orthoray::to_string(scene.start[0]) << " "
-        << orthoray::to_string(scene.start[1]) << "\n";
+    out << "point " << orthoray::to_string(scene.ray().start[0]) << " "
+        << orthoray::to_string(scene.ray().start[1]) << "\n";
     out << "point " << orthoray::to_string(p1[0]) << " " << orthoray::to_string(p1[1]) << "\n";
     out << "method induction\n";
     out << "direction " << orthoray::to_string(v1[0]) << " " << orthoray::to_string(v1[1]) << "\n";
@@ -706,7 +707,7 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
         expect_invalid(h, replace(c, "direction 1 -1", "direction 1 1"),
                        "is not the direction (1, -1)");
         Scene early = h;
-        early.target = {Rational(1, 2), Rational(1, 2), 0};
+        early.target() = {Rational(1, 2), Rational(1, 2), 0};
         expect_invalid(early, c, "step 1: the target lies on the segment from point 0 to point 1");
     }
     SECTION("path prefix") {
@@ -907,7 +908,7 @@ TEST_CASE("brute-force induction certificates of random scenes verify", "[induct
     int by_reason[4] = {};
     for (int round = 0; round < 4000 && verified < 400; ++round) {
         Scene scene = orthoray::test::random_scene(rng, shape);
-        scene.target = orthoray::test::random_target(rng, scene, shape);
+        scene.target() = orthoray::test::random_target(rng, scene, shape);
         orthoray::SolveOptions o;
         o.engine = orthoray::Engine::reference;
         o.max_steps = 100000;
@@ -1160,7 +1161,7 @@ TEST_CASE("the induction engine's certificates of random scenes verify, tampered
         int got = 0;
         for (int attempt = 0; got < family.goal && attempt < 20 * family.goal; ++attempt) {
             Scene scene = orthoray::test::random_scene(rng, family.shape);
-            scene.target = orthoray::test::random_target(rng, scene, family.shape);
+            scene.target() = orthoray::test::random_target(rng, scene, family.shape);
             const bool json = std::bernoulli_distribution(0.25)(rng);
             std::stringstream out;
             orthoray::CertificateWriter writer(out, scene,

@@ -65,7 +65,7 @@ void run_family(std::uint64_t seed, int count, test::RandomSceneShape shape, Tal
     const int goal = tally.induced + count;
     for (int attempt = 0; tally.induced < goal && attempt < 10 * count; ++attempt) {
         Scene scene = test::random_scene(rng, shape);
-        scene.target = test::random_target(rng, scene, shape);
+        scene.target() = test::random_target(rng, scene, shape);
         check_scene(scene, tally);
     }
 }
@@ -195,7 +195,7 @@ TEST_CASE("induction decides huge boxes and hallways", "[induction]") {
     const Answer hit = solve_with(hallway.scene, Engine::induction);
     REQUIRE(summary(hit) == "hit " + hallway.expect->reflections.get_str());
     Scene away = hallway.scene;
-    away.target = Vector{Rational(-1), Rational(-1)};
+    away.target() = Vector{Rational(-1), Rational(-1)};
     const Answer escape = solve_with(away, Engine::induction);
     REQUIRE(summary(escape) == "escape " + hallway.expect->reflections.get_str());
 }
@@ -207,12 +207,12 @@ TEST_CASE("induction when every mirror lies on an axis: w itself is invariant", 
     scene.dim = 2;
     scene.add(ElementKind::mirror, 0, 0, {{-5, 5}});
     scene.add(ElementKind::mirror, 1, 0, {{-5, 5}});
-    scene.direction = Vector{-1, -1, 0};
+    scene.ray().direction = Vector{-1, -1, 0};
     for (int sx = -2; sx <= 4; ++sx)
         for (int sy = -2; sy <= 4; ++sy)
             for (const Vector& target : {Vector{7, 8, 0}, Vector{-2, -1, 0}, Vector{1, 1, 0}}) {
-                scene.start = Vector{sx, sy, 0};
-                scene.target = target;
+                scene.ray().start = Vector{sx, sy, 0};
+                scene.target() = target;
                 INFO("start " << sx << " " << sy);
                 REQUIRE(summary(solve_with(scene, Engine::induction)) ==
                         summary(solve_with(scene, Engine::reference)));

@@ -37,7 +37,7 @@ TEST_CASE("a zero direction component drops the axis and unreachable elements", 
     CHECK(ls.target_reachable);
 
     Scene off = s;
-    off.target = {3, Rational(1, 2), 2};
+    off.target() = {3, Rational(1, 2), 2};
     CHECK_FALSE(lattice::make_lattice(off).target_reachable);
 }
 

@@ -42,9 +42,9 @@ Scene transformed(const Scene& s, const std::vector<Rational>& scale,
         map(e.lo);
         map(e.hi);
     }
-    map(out.start);
-    map(out.target);
-    for (int j = 0; j < s.dim; ++j) out.direction[j] = scale[j] * s.direction[j];
+    map(out.ray().start);
+    map(out.target());
+    for (int j = 0; j < s.dim; ++j) out.ray().direction[j] = scale[j] * s.ray().direction[j];
     return out;
 }
 

@@ -108,7 +108,7 @@ void run_family(std::uint64_t seed, int count, const test::RandomSceneShape& sha
     std::mt19937_64 rng(seed);
     for (int i = 0; i < count; ++i) {
         Scene scene = test::random_scene(rng, shape);
-        scene.target = test::random_target(rng, scene, shape);
+        scene.target() = test::random_target(rng, scene, shape);
         check_scene(scene, tally);
     }
 }

@@ -90,7 +90,7 @@ TEST_CASE("random 2D and 3D scenes round-trip through JSON", "[json]") {
         shape.max_denominator = 7;
         for (int i = 0; i < 200; ++i) {
             Scene scene = orthoray::test::random_scene(rng, shape);
-            scene.target = orthoray::test::random_point(rng, shape);
+            scene.target() = orthoray::test::random_point(rng, shape);
             INFO(write_scene(scene));
             require_same(scene, read_scene_json(write_scene_json(scene)));
             // and back through the text format
@@ -112,7 +112,7 @@ TEST_CASE("the JSON reader fills in the same fields as the text reader", "[json]
 TEST_CASE("huge and fractional rationals are kept exactly", "[json]") {
     const std::string big = "123456789012345678901234567890123456789/7";
     const Scene scene = read_scene_json(edit("\"7/2\"", "\"" + big + "\""));
-    CHECK(orthoray::to_string(scene.target[0]) == big);
+    CHECK(orthoray::to_string(scene.target()[0]) == big);
     CHECK(orthoray::to_string(read_scene_json(edit("\"5/2\"", "\"10/4\"")).elements[1].offset()) ==
           "5/2");
 }

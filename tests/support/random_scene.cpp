@@ -66,30 +66,30 @@ Scene random_scene(std::mt19937_64& rng, const RandomSceneShape& shape) {
         scene.add(kind, uniform(rng, 0, d - 1), coordinate(rng, shape), extent);
     }
 
-    scene.start = random_point(rng, shape);
+    scene.ray().start = random_point(rng, shape);
     if (!scene.elements.empty() && chance(rng, 0.15)) {
         // Start on an element: any point of its box.
         const Element& e = scene.elements[uniform(rng, 0, int(scene.elements.size()) - 1)];
-        for (int j = 0; j < d; ++j) scene.start[j] = chance(rng, 0.3) ? e.lo[j] : e.hi[j];
-        scene.start[e.axis] = e.offset();
+        for (int j = 0; j < d; ++j) scene.ray().start[j] = chance(rng, 0.3) ? e.lo[j] : e.hi[j];
+        scene.ray().start[e.axis] = e.offset();
     }
     bool zero = true;
     int parallel_axis = chance(rng, 0.15) ? uniform(rng, 0, d - 1) : -1;
     while (zero) {
         for (int j = 0; j < d; ++j) {
             if (parallel_axis >= 0 && j != parallel_axis) {
-                scene.direction[j] = 0;
+                scene.ray().direction[j] = 0;
                 continue;
             }
             int den = chance(rng, 0.2) ? 2 : 1;
-            scene.direction[j] =
+            scene.ray().direction[j] =
                 Rational(uniform(rng, -shape.max_direction, shape.max_direction), den);
-            scene.direction[j].canonicalize();
-            if (chance(rng, 0.15)) scene.direction[j] = 0;
-            zero = zero && scene.direction[j] == 0;
+            scene.ray().direction[j].canonicalize();
+            if (chance(rng, 0.15)) scene.ray().direction[j] = 0;
+            zero = zero && scene.ray().direction[j] == 0;
         }
     }
-    scene.target = random_point(rng, shape);
+    scene.target() = random_point(rng, shape);
     return scene;
 }
 
@@ -100,7 +100,7 @@ Vector target_on_trajectory(std::mt19937_64& rng, const Scene& scene) {
     options.max_steps = static_cast<std::uint64_t>(uniform(rng, 0, 6));
     options.path = &path;
     Scene probe = scene;
-    probe.target = Vector{Rational(1, 3) << 200, 0, 0}; // far away: not met early
+    probe.target() = Vector{Rational(1, 3) << 200, 0, 0}; // far away: not met early
     solve(probe, options);
     std::size_t i = static_cast<std::size_t>(uniform(rng, 0, int(path.points.size()) - 1));
     const Vector& p = path.points[i];

@@ -6,23 +6,47 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace orthoray {
 
-// hit: the ray reaches the target (answer yes). escape, absorbed, cycle: it
-// never does (answer no). limit: a resource limit stopped the run first.
-enum class Reason { hit, escape, absorbed, cycle, limit };
+// A single trajectory (one ray, one target, no splitter): hit, the ray
+// reaches the target (answer yes); escape, absorbed, cycle: it never does
+// (answer no). The illumination question (several rays or targets, or a
+// splitter; docs/optics.md): lit, every target is lit (yes); unlit, some
+// target is not (no). limit: a resource limit stopped the run first.
+enum class Reason { hit, escape, absorbed, cycle, limit, lit, unlit };
 
 // Which resource limit stopped a run (Reason::limit): the reflection cap, the
 // time allowed, memory, or a request from outside (a signal such as SIGINT).
 enum class Limit { steps, time, memory, interrupt };
 
+// What the illumination question says of one target.
+struct TargetAnswer {
+    enum class Status { lit, unlit, unknown };
+    Status status = Status::unknown;
+    // lit: the least number of reflections, over all branches of all rays,
+    // strictly before a branch first reaches the target.
+    Integer reflections;
+    // lit: the least-numbered ray (from 1, in file order) achieving it.
+    std::size_t ray = 0;
+};
+
 struct Answer {
     Reason reason = Reason::limit;
     // hit: reflections strictly before the ray first reaches the target;
-    // escape/absorbed: reflections before it leaves or stops; cycle: the
-    // period (reflections in one period); limit: reflections performed.
+    // escape/absorbed: reflections before it leaves or stops; cycle: tail +
+    // period (the cycle's start plus one period, docs/optics.md); limit:
+    // reflections performed. Unused for the illumination question.
     Integer reflections;
+    // cycle: reflections before the trajectory enters its cycle (0 when it
+    // is purely periodic, as it always is without one-sided elements); the
+    // period is reflections - tail.
+    Integer tail;
+    // The illumination question: one entry per target, in file order, and
+    // the number of distinct states explored. Empty for a single trajectory.
+    std::vector<TargetAnswer> targets;
+    Integer states;
     std::string engine; // which engine decided it ("lattice", "induction", "reference", "graph")
     std::string
         arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
@@ -46,7 +70,9 @@ struct Answer {
         double seconds = 0;       // building the exchange and inducing
     } induction;
 
-    bool yes() const { return reason == Reason::hit; }
+    bool yes() const { return reason == Reason::hit || reason == Reason::lit; }
+    bool illumination() const { return !targets.empty(); }
+    Integer period() const { return reflections - tail; }
     bool decided() const { return reason != Reason::limit; }
 };
 

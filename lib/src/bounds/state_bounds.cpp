@@ -25,9 +25,9 @@ std::size_t input_bits(const Scene& scene) {
             if (j != e.axis) take(e.hi[j]);
         }
     for (int j = 0; j < scene.dim; ++j) {
-        take(scene.start[j]);
-        take(scene.direction[j]);
-        take(scene.target[j]);
+        take(scene.ray().start[j]);
+        take(scene.ray().direction[j]);
+        take(scene.target()[j]);
     }
     return total;
 }

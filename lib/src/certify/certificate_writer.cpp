@@ -159,7 +159,7 @@ void CertificateWriter::finish(const Answer& answer) {
     switch (answer.reason) {
     case Reason::hit:
         statement("target");
-        write_vector(scene_.target);
+        write_vector(scene_.target());
         end_statement();
         break;
     case Reason::escape:

@@ -189,12 +189,12 @@ private:
             le.hi = lattice(s.hi[other], sa, name);
             elements_.push_back(std::move(le));
         }
-        lattice(scene_.start[0], p_.sx, "the start's x");
-        lattice(scene_.start[1], p_.sy, "the start's y");
+        lattice(scene_.ray().start[0], p_.sx, "the start's x");
+        lattice(scene_.ray().start[1], p_.sy, "the start's y");
         p1x_ = lattice(prefix_.p1[0], p_.sx, "point 1's x");
         p1y_ = lattice(prefix_.p1[1], p_.sy, "point 1's y");
-        tx_ = lattice(scene_.target[0], p_.sx, "the target's x");
-        ty_ = lattice(scene_.target[1], p_.sy, "the target's y");
+        tx_ = lattice(scene_.target()[0], p_.sx, "the target's x");
+        ty_ = lattice(scene_.target()[1], p_.sy, "the target's y");
         wx_ = dy1_ * p1y_ - dx1_ * p1x_;
     }
 
@@ -864,15 +864,15 @@ private:
         const Integer budget = p_.reflections * Integer(scene_.elements.size() + 1);
         if (budget > Integer(100000000)) return;
         const int dim = 2;
-        Vector p = scene_.start;
-        Vector v = scene_.direction;
+        Vector p = scene_.ray().start;
+        Vector v = scene_.ray().direction;
         Vector p1, v1;
         const Integer claim = p_.reflections;
         Integer k = 0; // reflections so far
         std::string outcome;
         for (;;) {
             const Event e = first_met(scene_, p, v);
-            if (on_ray(scene_.target, p, v, e, dim)) {
+            if (on_ray(scene_.target(), p, v, e, dim)) {
                 outcome = "hit";
                 break;
             }

@@ -53,11 +53,11 @@ public:
         const std::uint64_t k = points_++;
         if (failure_) return;
         if (k == 0) {
-            if (!same(q, scene_.start, dim_))
+            if (!same(q, scene_.ray().start, dim_))
                 fail(k, "point 0 is " + show(q, dim_) + ", not the start point " +
-                            show(scene_.start, dim_));
+                            show(scene_.ray().start, dim_));
             p_ = q;
-            v_ = scene_.direction;
+            v_ = scene_.ray().direction;
             return;
         }
         const std::string from = "point " + std::to_string(k - 1);
@@ -72,7 +72,7 @@ public:
                                show(expected, dim_));
         // Every listed segment comes before the one a hit claims, so the
         // target must be on none of them whatever the reason.
-        if (on_ray(scene_.target, p_, v_, e, dim_))
+        if (on_ray(scene_.target(), p_, v_, e, dim_))
             return fail(k, "the target lies on the segment from " + from + " to point " +
                                std::to_string(k));
         p_ = q;
@@ -152,10 +152,10 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
     Integer expected = to_integer(last);
     switch (claim.reason) {
     case Reason::hit:
-        if (!same(claim.extra, scene.target, dim))
+        if (!same(claim.extra, scene.target(), dim))
             return bad("target " + show(claim.extra, dim) + " is not the scene's target " +
-                       show(scene.target, dim));
-        if (!on_ray(scene.target, path.p(), path.v(), first_met(scene, path.p(), path.v()), dim))
+                       show(scene.target(), dim));
+        if (!on_ray(scene.target(), path.p(), path.v(), first_met(scene, path.p(), path.v()), dim))
             return bad("the target does not lie on the ray from " + at_last +
                        " up to the next element met");
         break;
@@ -167,7 +167,7 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
         if (!same(claim.extra, path.v(), dim))
             return bad("direction " + show(claim.extra, dim) + " is not the ray's direction " +
                        show(path.v(), dim));
-        if (on_ray(scene.target, path.p(), path.v(), e, dim))
+        if (on_ray(scene.target(), path.p(), path.v(), e, dim))
             return bad("the target lies on the final ray from " + at_last);
         break;
     }

@@ -14,6 +14,10 @@ const char* to_string(Reason reason) {
         return "cycle";
     case Reason::limit:
         return "limit";
+    case Reason::lit:
+        return "lit";
+    case Reason::unlit:
+        return "unlit";
     }
     return "?";
 }

@@ -77,7 +77,7 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
         answer.reflections = Integer(static_cast<unsigned long>(reflections));
         return answer;
     };
-    RationalState s{scene.start, scene.direction};
+    RationalState s{scene.ray().start, scene.ray().direction};
     if (options.path) options.path->visit(s.p, s.v);
     Detector detector;
     // A reflection costs a scan of every element, so the monitor is polled
@@ -95,7 +95,7 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
                 next_poll = Clock::now() + std::chrono::milliseconds(10);
             }
             ReferenceEvent e = reference_step(scene, s.p, s.v);
-            if (reference_passes(scene, scene.target, s.p, s.v, e))
+            if (reference_passes(scene, scene.target(), s.p, s.v, e))
                 return finish(Reason::hit, reflections);
             if (e.escape) return finish(Reason::escape, reflections);
             if (e.absorbed) {

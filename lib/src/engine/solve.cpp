@@ -45,6 +45,12 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
+    // The illumination engine (several rays or targets, splitters) and
+    // one-sided elements are being built (issue 12); until then such scenes
+    // are refused rather than answered by rules that ignore them.
+    if (!scene.single_trajectory() || scene.has_one_sided())
+        throw std::invalid_argument(
+            "splitters, one-sided elements and several rays or targets are not decided yet");
     switch (options.engine) {
     case Engine::reference:
         return engine::solve_by_reference(scene, options);

@@ -63,7 +63,7 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
     std::vector<std::size_t> in_degree(n, 0);
     auto step = [&](std::size_t u, const Vector& p, const Vector& v) {
         engine::ReferenceEvent e = engine::reference_step(scene, p, v);
-        passes[u] = engine::reference_passes(scene, scene.target, p, v, e);
+        passes[u] = engine::reference_passes(scene, scene.target(), p, v, e);
         std::size_t w;
         if (e.escape) {
             w = escape_vertex;
@@ -84,7 +84,7 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
         }
         boost::add_edge(u, w, g);
     };
-    step(start_vertex, scene.start, scene.direction);
+    step(start_vertex, scene.ray().start, scene.ray().direction);
     for (std::size_t k = 0; k < key_of.size(); ++k) {
         if (monitor && k % 1024 == 0) {
             if (const std::optional<Limit> limit = monitor->poll(0)) {

@@ -75,22 +75,22 @@ GeneratedScene generate_box(const BoxFamily& f) {
         throw std::invalid_argument("the direction must not be 0");
     const bool from_corner = !f.start && !f.direction;
     for (int j = 0; j < dim; ++j) {
-        scene.start[j] = f.start ? (*f.start)[j] : Rational(0);
-        scene.direction[j] = f.direction ? (*f.direction)[j] : Rational(1);
+        scene.ray().start[j] = f.start ? (*f.start)[j] : Rational(0);
+        scene.ray().direction[j] = f.direction ? (*f.direction)[j] : Rational(1);
     }
     const CornerOrbit orbit = corner_orbit(f.sides);
     switch (f.target) {
     case BoxFamily::Target::reached:
-        scene.target = orbit.corner;
+        scene.target() = orbit.corner;
         break;
     case BoxFamily::Target::far:
-        for (int j = 0; j < dim; ++j) scene.target[j] = sides[static_cast<std::size_t>(j)];
+        for (int j = 0; j < dim; ++j) scene.target()[j] = sides[static_cast<std::size_t>(j)];
         break;
     case BoxFamily::Target::generic:
-        scene.target = Vector{Rational(1, 2), Rational(1, 3), dim == 3 ? Rational(1, 5) : 0};
+        scene.target() = Vector{Rational(1, 2), Rational(1, 3), dim == 3 ? Rational(1, 5) : 0};
         break;
     case BoxFamily::Target::point:
-        scene.target = f.target_point;
+        scene.target() = f.target_point;
         break;
     }
     out.notes.push_back(std::string("box; target: ") + target_name(f.target));
@@ -100,7 +100,7 @@ GeneratedScene generate_box(const BoxFamily& f) {
     // path to 0, where it flips again: a cycle through the N + 1 reflections
     // out and the N + 1 back, passing no other corner and no point off the
     // lines x +- y = integer.
-    if (scene.target == orbit.corner) {
+    if (scene.target() == orbit.corner) {
         out.expect = Expectation{Reason::hit, orbit.reflections};
         out.notes.push_back("closed form: the corner is reached after N reflections, N = "
                             "sum (T/a_j - 1) - sum (T/lcm(a_i, a_j) - 1), T = lcm of the sides");

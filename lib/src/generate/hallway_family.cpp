@@ -20,15 +20,15 @@ GeneratedScene generate_hallway(const Rational& length, const Rational& slope) {
     scene.dim = 2;
     scene.add_mirror(1, 0, {{0, length}});
     scene.add_mirror(1, 1, {{0, length}});
-    scene.start = Vector{0, Rational(1, 2), 0};
-    scene.direction = Vector{Rational(slope.get_den()), Rational(slope.get_num()), 0};
+    scene.ray().start = Vector{0, Rational(1, 2), 0};
+    scene.ray().direction = Vector{Rational(slope.get_den()), Rational(slope.get_num()), 0};
     const Rational top = Rational(1, 2) + slope * length;
     Integer n;
     mpz_fdiv_q(n.get_mpz_t(), top.get_num_mpz_t(), top.get_den_mpz_t());
     const Rational x = length + 1, y_unfolded = Rational(1, 2) + slope * x;
     const bool even = Integer(n % 2) == 0;
-    scene.target = Vector{x, even ? Rational(y_unfolded - n) : Rational(n + 1 - y_unfolded), 0};
-    scene.target[1].canonicalize();
+    scene.target() = Vector{x, even ? Rational(y_unfolded - n) : Rational(n + 1 - y_unfolded), 0};
+    scene.target()[1].canonicalize();
     out.expect = Expectation{Reason::hit, n};
     out.notes.push_back("hallway: mirrors y = 0 and y = 1 for x in [0, " + to_string(length) +
                         "], slope " + to_string(slope) + " from (0, 1/2)");

@@ -95,18 +95,18 @@ GeneratedScene generate_random(const RandomFamily& f) {
             Integer(static_cast<long>(uniform(rng, 0, absorb_den.get_si() - 1))) < absorb_num;
         scene.add(absorber ? ElementKind::absorber : ElementKind::mirror, axis, offset, extent);
     }
-    for (int j = 0; j < f.dim; ++j) scene.start[j] = random_number(rng, f, 0, f.range);
+    for (int j = 0; j < f.dim; ++j) scene.ray().start[j] = random_number(rng, f, 0, f.range);
     for (int j = 0; j < f.dim; ++j) {
         std::int64_t d = uniform(rng, 1, f.direction_size);
         if (uniform(rng, 0, 1) == 0) d = -d;
-        scene.direction[j] = Rational(Integer(static_cast<long>(d)));
+        scene.ray().direction[j] = Rational(Integer(static_cast<long>(d)));
     }
     out.notes.push_back(
         "random: " + std::to_string(f.mirrors) + " elements" +
         (f.box ? " inside the mirror box [0, " + std::to_string(f.range) + "]" : ""));
 
     if (!f.target_after) {
-        for (int j = 0; j < f.dim; ++j) scene.target[j] = random_number(rng, f, 0, f.range);
+        for (int j = 0; j < f.dim; ++j) scene.target()[j] = random_number(rng, f, 0, f.range);
         out.notes.push_back("target: a random point (answer not known in advance)");
         return out;
     }
@@ -119,7 +119,7 @@ GeneratedScene generate_random(const RandomFamily& f) {
     options.max_steps = static_cast<std::uint64_t>(*f.target_after) + 1;
     options.path = &path;
     Scene probe = scene;
-    probe.target = Vector{Rational(-1, 3) - f.range, Rational(-1, 7) - f.range, 0};
+    probe.target() = Vector{Rational(-1, 3) - f.range, Rational(-1, 7) - f.range, 0};
     const Answer traced = solve(probe, options);
     // Segment i runs from points[i] to points[i + 1]; after an escape the last
     // one is the final ray. Take segment k, or the last there is.
@@ -131,15 +131,15 @@ GeneratedScene generate_random(const RandomFamily& f) {
     const bool final_ray = escaped && k + 1 == path.points.size();
     const Vector& a = path.points[k];
     for (int j = 0; j < f.dim; ++j)
-        scene.target[j] = final_ray ? Rational(a[j] + path.directions[k][j])
-                                    : Rational((a[j] + path.points[k + 1][j]) / 2);
-    for (int j = 0; j < f.dim; ++j) scene.target[j].canonicalize();
+        scene.target()[j] = final_ray ? Rational(a[j] + path.directions[k][j])
+                                      : Rational((a[j] + path.points[k + 1][j]) / 2);
+    for (int j = 0; j < f.dim; ++j) scene.target()[j].canonicalize();
 
     // The ray first reaches the target on the first segment holding it: the
     // answer is yes, with that segment's number of reflections.
     std::size_t first = k;
     for (std::size_t i = 0; i < k; ++i) {
-        if (on_segment(scene.target, path.points[i], path.points[i + 1], f.dim, false)) {
+        if (on_segment(scene.target(), path.points[i], path.points[i + 1], f.dim, false)) {
             first = i;
             break;
         }

@@ -27,13 +27,14 @@ GeneratedScene generate_square(const Integer& p, const Integer& q) {
     scene.dim = 2;
     generate::add_box_faces(scene, {Rational(1), Rational(1)});
     const Integer abs_p = abs(p);
-    scene.start = Vector{Rational(1, 2), Rational(1, 2) + Rational(1, Integer(4 * abs_p + 1)), 0};
-    scene.start[1].canonicalize();
-    scene.direction = Vector{Rational(p), Rational(q), 0};
+    scene.ray().start =
+        Vector{Rational(1, 2), Rational(1, 2) + Rational(1, Integer(4 * abs_p + 1)), 0};
+    scene.ray().start[1].canonicalize();
+    scene.ray().direction = Vector{Rational(p), Rational(q), 0};
     Integer prime;
     const Integer above = 2 * (4 * abs_p + 1);
     mpz_nextprime(prime.get_mpz_t(), above.get_mpz_t());
-    scene.target = Vector{Rational(1, 2), Rational(1, prime), 0};
+    scene.target() = Vector{Rational(1, 2), Rational(1, prime), 0};
     Integer g;
     mpz_gcd(g.get_mpz_t(), p.get_mpz_t(), q.get_mpz_t());
     const Integer period = 2 * (abs_p / g + abs(q) / g);

@@ -35,14 +35,14 @@ public:
         const JsonValue& ray = member(root, "ray", "{\"start\": [...], \"direction\": [...]}");
         expect_type(ray, JsonValue::Type::object, "{\"start\": [...], \"direction\": [...]}");
         check_keys(ray, {"start", "direction"});
-        scene_.start = point(member(ray, "start", "the start point"), "the start point");
+        scene_.ray().start = point(member(ray, "start", "the start point"), "the start point");
         const JsonValue& direction = member(ray, "direction", "the direction");
-        scene_.direction = point(direction, "the direction");
+        scene_.ray().direction = point(direction, "the direction");
         bool zero = true;
-        for (int j = 0; j < scene_.dim; ++j) zero = zero && scene_.direction[j] == 0;
+        for (int j = 0; j < scene_.dim; ++j) zero = zero && scene_.ray().direction[j] == 0;
         if (zero) fail(direction, "found the direction 0, expected a nonzero direction");
 
-        scene_.target = point(member(root, "target", "the target point"), "the target point");
+        scene_.target() = point(member(root, "target", "the target point"), "the target point");
         return std::move(scene_);
     }
 

@@ -35,11 +35,11 @@ std::string write_scene_json(const Scene& scene) {
         out << "}}";
     }
     out << (scene.elements.empty() ? "],\n" : "\n  ],\n") << "  \"ray\": {\"start\": ";
-    write_point(out, scene.start, scene.dim);
+    write_point(out, scene.ray().start, scene.dim);
     out << ", \"direction\": ";
-    write_point(out, scene.direction, scene.dim);
+    write_point(out, scene.ray().direction, scene.dim);
     out << "},\n  \"target\": ";
-    write_point(out, scene.target, scene.dim);
+    write_point(out, scene.target(), scene.dim);
     out << "\n}\n";
     return out.str();
 }

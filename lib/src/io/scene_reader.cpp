@@ -38,6 +38,8 @@ public:
     SceneReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
     Scene read() {
+        scene_.rays.clear();
+        scene_.targets.clear();
         // Rationals are not nothrow-movable, so a growing vector would copy
         // every element on each reallocation: size it once instead.
         scene_.elements.reserve(element_statements());
@@ -58,20 +60,22 @@ public:
             begin = end + 1;
         }
         if (dim_line_ == 0) fail_at_eof("'dim 2' or 'dim 3' as the first statement");
-        if (ray_line_ == 0) fail_at_eof("a 'ray' statement");
-        if (target_line_ == 0) fail_at_eof("a 'target' statement");
+        if (scene_.rays.empty()) fail_at_eof("a 'ray' statement");
+        if (scene_.targets.empty()) fail_at_eof("a 'target' statement");
         return std::move(scene_);
     }
 
 private:
-    // Lines whose first word is 'mirror' or 'absorber': an upper bound on the
+    // Lines whose first word names an element kind: an upper bound on the
     // elements the file declares.
     std::size_t element_statements() const {
         std::size_t count = 0;
         for (std::size_t begin = 0; begin < text_.size();) {
             begin = std::min(text_.find_first_not_of(" \t\r", begin), text_.size());
             const std::string_view rest = text_.substr(begin);
-            if (rest.starts_with("mirror") || rest.starts_with("absorber")) ++count;
+            if (rest.starts_with("mirror") || rest.starts_with("absorber") ||
+                rest.starts_with("splitter"))
+                ++count;
             begin = std::min(text_.find('\n', begin), text_.size()) + 1;
         }
         return count;
@@ -80,7 +84,7 @@ private:
     std::string_view text_;
     const std::string& file_;
     Scene scene_;
-    int dim_line_ = 0, ray_line_ = 0, target_line_ = 0;
+    int dim_line_ = 0;
     int eof_line_ = 0, eof_column_ = 0;
 
     // Per-line state while reading one statement.
@@ -148,10 +152,23 @@ private:
         return n.value;
     }
 
-    int axis_of(const Token& t) const {
-        if (t.text.size() == 1 && t.text[0] >= 'x' && t.text[0] < 'x' + scene_.dim)
-            return t.text[0] - 'x';
-        return -1;
+    // An axis letter, optionally followed at once by the side the element
+    // acts on: 'x', 'x+', 'x-'. Returns false when the token is not one.
+    bool axis_of(const Token& t, int& axis, Side& side) const {
+        const std::string_view text = t.text;
+        if (text.empty() || text.size() > 2 || text[0] < 'x' || text[0] >= 'x' + scene_.dim)
+            return false;
+        axis = text[0] - 'x';
+        side = Side::both;
+        if (text.size() == 2) {
+            if (text[1] == '+')
+                side = Side::plus;
+            else if (text[1] == '-')
+                side = Side::minus;
+            else
+                return false;
+        }
+        return true;
     }
 
     std::string axis_letters() const { return scene_.dim == 2 ? "x or y" : "x, y or z"; }
@@ -164,10 +181,12 @@ private:
         if (head.text == "dim") return read_dim(head);
         if (head.text == "mirror") return read_element(ElementKind::mirror);
         if (head.text == "absorber") return read_element(ElementKind::absorber);
-        if (head.text == "ray") return read_ray(head);
-        if (head.text == "target") return read_target(head);
-        fail(head.column, "found " + quoted(head.text) +
-                              ", expected a statement: dim, mirror, absorber, ray or target");
+        if (head.text == "splitter") return read_element(ElementKind::splitter);
+        if (head.text == "ray") return read_ray();
+        if (head.text == "target") return read_target();
+        fail(head.column,
+             "found " + quoted(head.text) +
+                 ", expected a statement: dim, mirror, absorber, splitter, ray or target");
     }
 
     void read_dim(const Token& head) {
@@ -186,11 +205,23 @@ private:
         Element e;
         e.kind = kind;
         e.line = line_;
+        const std::string axis_forms = "the normal axis (" + axis_letters() + ") of a " +
+                                       std::to_string(scene_.dim) + "D scene";
         const Token& a = take("the normal axis (" + axis_letters() + ")");
-        e.axis = axis_of(a);
-        if (e.axis < 0)
-            fail(a.column, "found " + quoted(a.text) + ", expected the normal axis (" +
-                               axis_letters() + ") of a " + std::to_string(scene_.dim) + "D scene");
+        if (!axis_of(a, e.axis, e.side)) {
+            // A token that starts like an axis went wrong in its sign.
+            const bool signed_axis =
+                a.text.size() > 1 && a.text[0] >= 'x' && a.text[0] < 'x' + scene_.dim;
+            fail(a.column, "found " + quoted(a.text) + ", expected " + axis_forms +
+                               (signed_axis ? ", followed at most by one sign (+ or -)" : ""));
+        }
+        // 'x +' is a sign parted from its axis: say so rather than call the
+        // sign a malformed offset.
+        if (next_ < tokens_.size() && (tokens_[next_].text == "+" || tokens_[next_].text == "-"))
+            fail(tokens_[next_].column,
+                 "found " + quoted(tokens_[next_].text) +
+                     " after a space, expected the side's sign right after the axis letter (" +
+                     axis_name(e.axis) + std::string(tokens_[next_].text) + ") or the offset");
         std::string normal(1, axis_name(e.axis));
         e.lo[e.axis] = e.hi[e.axis] = take_number("the offset " + normal + " = c");
         for (int j = 0; j < scene_.dim; ++j) {
@@ -212,32 +243,30 @@ private:
         scene_.elements.push_back(std::move(e));
     }
 
-    void read_ray(const Token& head) {
-        if (ray_line_ != 0)
-            fail(head.column, "found a second 'ray' (the first is on line " +
-                                  std::to_string(ray_line_) + "), expected one 'ray' statement");
+    // Rays and targets may each appear any number of times; they are
+    // numbered from 1 in file order.
+    void read_ray() {
+        Ray ray;
+        ray.line = line_;
         for (int j = 0; j < scene_.dim; ++j)
-            scene_.start[j] = take_number(std::string("the start ") + axis_name(j));
+            ray.start[j] = take_number(std::string("the start ") + axis_name(j));
         int direction_column = next_ < tokens_.size() ? tokens_[next_].column : end_column_;
         bool zero = true;
         for (int j = 0; j < scene_.dim; ++j) {
-            scene_.direction[j] = take_number(std::string("the direction's ") + axis_name(j));
-            zero = zero && scene_.direction[j] == 0;
+            ray.direction[j] = take_number(std::string("the direction's ") + axis_name(j));
+            zero = zero && ray.direction[j] == 0;
         }
         if (zero) fail(direction_column, "found the direction 0, expected a nonzero direction");
         expect_end_of_line();
-        ray_line_ = line_;
+        scene_.rays.push_back(std::move(ray));
     }
 
-    void read_target(const Token& head) {
-        if (target_line_ != 0)
-            fail(head.column, "found a second 'target' (the first is on line " +
-                                  std::to_string(target_line_) +
-                                  "), expected one 'target' statement");
+    void read_target() {
+        Vector target;
         for (int j = 0; j < scene_.dim; ++j)
-            scene_.target[j] = take_number(std::string("the target ") + axis_name(j));
+            target[j] = take_number(std::string("the target ") + axis_name(j));
         expect_end_of_line();
-        target_line_ = line_;
+        scene_.targets.push_back(std::move(target));
     }
 };
 

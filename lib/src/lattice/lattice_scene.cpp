@@ -14,7 +14,7 @@ Integer abs_of(const Integer& a) {
 LatticeScene make_lattice(const Scene& scene) {
     LatticeScene out;
     out.scene = &scene;
-    const Vector& v = scene.direction;
+    const Vector& v = scene.ray().direction;
 
     // Primitive integer direction u and L = lcm |u_j|.
     Integer vden = 1;
@@ -37,7 +37,8 @@ LatticeScene make_lattice(const Scene& scene) {
     auto spans_start = [&](const Element& e) {
         if (v[e.axis] == 0) return false; // moving parallel to its plane
         for (int j = 0; j < scene.dim; ++j)
-            if (v[j] == 0 && (scene.start[j] < e.lo[j] || e.hi[j] < scene.start[j])) return false;
+            if (v[j] == 0 && (scene.ray().start[j] < e.lo[j] || e.hi[j] < scene.ray().start[j]))
+                return false;
         return true;
     };
 
@@ -47,8 +48,8 @@ LatticeScene make_lattice(const Scene& scene) {
         for (int i = 0; i < out.dim; ++i)
             if (x[out.active[i]].get_den() != 1) D = lcm(D, x[out.active[i]].get_den());
     };
-    take_denominators(scene.start);
-    take_denominators(scene.target);
+    take_denominators(scene.ray().start);
+    take_denominators(scene.target());
     for (const Element& e : scene.elements) {
         if (!spans_start(e)) continue;
         take_denominators(e.lo);
@@ -66,11 +67,11 @@ LatticeScene make_lattice(const Scene& scene) {
         if (mpz_cmpabs(x.get_mpz_t(), out.magnitude.get_mpz_t()) > 0) out.magnitude = abs_of(x);
     };
     for (int i = 0; i < out.dim; ++i) {
-        out.start[i] = scaled(scene.start[out.active[i]], i);
+        out.start[i] = scaled(scene.ray().start[out.active[i]], i);
         track(out.start[i]);
         if (v[out.active[i]] < 0) out.start_direction |= 1u << i;
     }
-    out.target_reachable = out.to_lattice(scene.target, out.target);
+    out.target_reachable = out.to_lattice(scene.target(), out.target);
     if (out.target_reachable)
         for (int i = 0; i < out.dim; ++i) track(out.target[i]);
     out.elements.reserve(scene.elements.size());
@@ -91,7 +92,7 @@ LatticeScene make_lattice(const Scene& scene) {
 }
 
 Vector LatticeScene::point(const Coords& p) const {
-    Vector x = scene->start; // inactive coordinates never change
+    Vector x = scene->ray().start; // inactive coordinates never change
     for (int i = 0; i < dim; ++i) {
         x[active[i]] = Rational(p[i], scale[i]);
         x[active[i]].canonicalize();
@@ -102,7 +103,7 @@ Vector LatticeScene::point(const Coords& p) const {
 Vector LatticeScene::direction(unsigned mask) const {
     Vector d;
     for (int i = 0; i < dim; ++i) {
-        const Rational& v = scene->direction[active[i]];
+        const Rational& v = scene->ray().direction[active[i]];
         d[active[i]] = ((mask >> i) & 1u) ? Rational(-abs(v)) : Rational(abs(v));
     }
     return d;
@@ -110,7 +111,7 @@ Vector LatticeScene::direction(unsigned mask) const {
 
 bool LatticeScene::to_lattice(const Vector& x, Coords& out) const {
     for (int j = 0; j < scene->dim; ++j)
-        if (scene->direction[j] == 0 && x[j] != scene->start[j]) return false;
+        if (scene->ray().direction[j] == 0 && x[j] != scene->ray().start[j]) return false;
     for (int i = 0; i < dim; ++i) {
         Rational r = x[active[i]] * scale[i];
         if (r.get_den() != 1) return false;

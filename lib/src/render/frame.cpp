@@ -19,8 +19,8 @@ Frame::Frame(const Scene& scene) : dim_(scene.dim) {
             if (first || p[j] > hi[j]) hi[j] = p[j];
         }
     };
-    include(scene.start, true);
-    include(scene.target, false);
+    include(scene.ray().start, true);
+    include(scene.target(), false);
     for (const Element& e : scene.elements) {
         include(e.lo, false);
         include(e.hi, false);

@@ -215,7 +215,7 @@ struct SceneRenderer::Impl {
         end = e;
         if (!last) return;
         if (e.reason == Reason::hit) {
-            segment(*last, frame.normalised(scene.target));
+            segment(*last, frame.normalised(scene.target()));
         } else if (e.reason == Reason::escape) {
             // Out along the final direction to the frame's edge.
             double longest = 0;
@@ -338,15 +338,15 @@ struct SceneRenderer::Impl {
 
     void write_markers(std::ostream& out, const View& v) const {
         // Start: a dot and an arrow along the start direction as this view sees it.
-        const Pixel s = v.map(frame.normalised(scene.start));
+        const Pixel s = v.map(frame.normalised(scene.ray().start));
 
         // The direction in normalised units, scaled so its largest part is
         // 1 (the scene's numbers may be far beyond what a double can divide).
-        const Point3 from = frame.normalised(scene.start);
+        const Point3 from = frame.normalised(scene.ray().start);
         Point3 ahead = from, d{0, 0, 0};
         double largest = 0;
         for (int j = 0; j < scene.dim; ++j) {
-            d[j] = frame.normalised_component(scene.direction[j], j);
+            d[j] = frame.normalised_component(scene.ray().direction[j], j);
             largest = std::max(largest, std::abs(d[j]));
         }
         if (largest > 0 && std::isfinite(largest))
@@ -370,7 +370,7 @@ struct SceneRenderer::Impl {
             out << "<rect class=\"absorbed\" x=\"" << number_text(p.x - 5) << "\" y=\""
                 << number_text(p.y - 5) << "\" width=\"10\" height=\"10\"/>\n";
         }
-        const Pixel t = v.map(frame.normalised(scene.target));
+        const Pixel t = v.map(frame.normalised(scene.target()));
         out << "<path class=\"target\" d=\"M" << number_text(t.x - 7) << " " << number_text(t.y - 7)
             << "L" << number_text(t.x + 7) << " " << number_text(t.y + 7) << "M"
             << number_text(t.x - 7) << " " << number_text(t.y + 7) << "L" << number_text(t.x + 7)
