@@ -353,7 +353,10 @@ struct SceneRenderer::Impl {
                                                                : 0.6;
         // Likewise a dense path, so the mirrors still show through it.
         const std::uint64_t drawn = fullest_path().drawn();
-        const double path_stroke = drawn <= 1000 ? 2 : drawn <= 20000 ? 0.8 : 0.4;
+        const double path_stroke = drawn <= 100     ? 2
+                                   : drawn <= 1000  ? 1.3
+                                   : drawn <= 20000 ? 0.8
+                                                    : 0.4;
         char style[1024];
         std::snprintf(
             style, sizeof style,
