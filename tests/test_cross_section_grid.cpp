@@ -139,6 +139,6 @@ Scene mirror_box(int n, bool crowded) {
 TEST_CASE("3D solves use the cross-section grid unless elements crowd", "[section]") {
     SolveOptions options;
     options.max_steps = 1000;
-    CHECK(solve(mirror_box(2000, false), options).shooter == "section");
-    CHECK(solve(mirror_box(2000, true), options).shooter == "bvh");
+    CHECK(solve(mirror_box(2000, false), options).shooter == ShooterUsed::section);
+    CHECK(solve(mirror_box(2000, true), options).shooter == ShooterUsed::bvh);
 }

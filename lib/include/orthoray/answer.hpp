@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
 
 namespace orthoray {
 
@@ -17,34 +16,45 @@ enum class Reason { hit, escape, absorbed, cycle, limit };
 // time allowed, memory, or a request from outside (a signal such as SIGINT).
 enum class Limit { steps, time, memory, interrupt };
 
+// What actually ran, as opposed to what SolveOptions asks for (where
+// "automatic" leaves the choice to the library). `none`: nothing ran, as
+// when memory ran out before an engine started.
+enum class EngineUsed { none, lattice, induction, reference, graph };
+// The integers it computed with: machine ones, GMP, or rationals (the
+// reference tracer and the state graph).
+enum class ArithmeticUsed { none, int64, int128, gmp, rational };
+// How the lattice engine found next hits; none for the other engines.
+enum class ShooterUsed { none, grid, bvh, section, pieces };
+
 struct Answer {
     Reason reason = Reason::limit;
     // hit: reflections strictly before the ray first reaches the target;
     // escape/absorbed: reflections before it leaves or stops; cycle: the
     // period (reflections in one period); limit: reflections performed.
     Integer reflections;
-    std::string engine; // which engine decided it ("lattice", "induction", "reference", "graph")
-    std::string
-        arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
     Limit limit = Limit::steps; // which limit, when reason is Reason::limit
-    std::string shooter;        // how the lattice engine found next hits: "grid", "bvh", "section",
-                                // "pieces" (2D), or ""
+    EngineUsed engine = EngineUsed::none;
+    ArithmeticUsed arithmetic = ArithmeticUsed::none;
+    ShooterUsed shooter = ShooterUsed::none;
 
-    // What the lattice engine built before or while stepping.
-    struct Setup {
-        double seconds = 0;     // time spent building the grid and piece tables
-        std::size_t cells = 0;  // uniform grid cells
-        std::size_t pieces = 0; // piece-table pieces (0 when none were built)
-    } setup;
+    // Diagnostics: what the engines built and did. They never change the answer.
+    struct Stats {
+        // What the lattice engine built before or while stepping.
+        struct Setup {
+            double seconds = 0;     // time spent building the grid and piece tables
+            std::size_t cells = 0;  // uniform grid cells
+            std::size_t pieces = 0; // piece-table pieces (0 when none were built)
+        } setup;
 
-    // What the induction engine did, when it decided (docs/induction.md).
-    struct Induction {
-        std::size_t pieces = 0;   // pieces of the interval exchange
-        Integer states;           // states it permutes
-        std::uint64_t steps = 0;  // induction steps, an accelerated one counting once
-        std::uint64_t rounds = 0; // of which accelerated
-        double seconds = 0;       // building the exchange and inducing
-    } induction;
+        // What the induction engine did, when it decided (docs/induction.md).
+        struct Induction {
+            std::size_t pieces = 0;   // pieces of the interval exchange
+            Integer states;           // states it permutes
+            std::uint64_t steps = 0;  // induction steps, an accelerated one counting once
+            std::uint64_t rounds = 0; // of which accelerated
+            double seconds = 0;       // building the exchange and inducing
+        } induction;
+    } stats;
 
     bool yes() const { return reason == Reason::hit; }
     bool decided() const { return reason != Reason::limit; }
@@ -54,6 +64,12 @@ struct Answer {
 const char* to_string(Reason reason);
 // "steps", "time", "memory", "interrupt".
 const char* to_string(Limit limit);
+// "lattice", "induction", "reference", "graph"; "" for none.
+const char* to_string(EngineUsed engine);
+// "int64", "int128", "gmp", "rational"; "" for none.
+const char* to_string(ArithmeticUsed arithmetic);
+// "grid", "bvh", "section", "pieces"; "" for none.
+const char* to_string(ShooterUsed shooter);
 // "yes", "no", "unknown".
 const char* answer_word(const Answer& answer);
 

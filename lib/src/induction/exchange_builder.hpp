@@ -20,9 +20,9 @@
 // 5. Rotation, so that x is 0.
 #pragma once
 
-#include "induction/interval_exchange.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "orthoray/exchange.hpp"
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
@@ -202,6 +202,24 @@ build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<In
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];
     return exchange;
+}
+
+// The exchange of the ray from the scene's start, x being the state after
+// its first reflection; nothing when the first shot escapes or is absorbed.
+template <class Int>
+std::optional<IntervalExchange> build_exchange_from_start(const lattice::LatticeScene& scene,
+                                                          const lattice::UniformGrid<Int, 2>& grid,
+                                                          const lattice::PieceTable<Int>& table) {
+    Int start[2];
+    for (int j = 0; j < 2; ++j) start[j] = lattice::from_integer<Int>(scene.start[j]);
+    const lattice::Shot<Int> first = grid.shoot(start, scene.start_direction);
+    if (first.escape || first.absorber || first.flip == 0) return std::nullopt;
+    Integer x[2];
+    for (int j = 0; j < 2; ++j)
+        x[j] = scene.start[j] + (((scene.start_direction >> j) & 1u)
+                                     ? Integer(-lattice::to_integer(first.t))
+                                     : lattice::to_integer(first.t));
+    return build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip);
 }
 
 } // namespace orthoray::induction
