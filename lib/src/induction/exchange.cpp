@@ -17,8 +17,8 @@ namespace {
 // the tables with the induction's cap and the target marked.
 template <class Int>
 std::optional<IntervalExchange> exchange_on(const lattice::LatticeScene& scene) {
-    const lattice::UniformGrid<Int, 2> grid(scene);
-    auto table = lattice::PieceTable<Int>::build(scene, grid, induction::piece_cap(grid.size()));
+    const shoot::UniformGrid<Int, 2> grid(scene);
+    auto table = shoot::PieceTable<Int>::build(scene, grid, induction::piece_cap(grid.size()));
     if (!table) return std::nullopt;
     if (scene.target_reachable) {
         Int target[2];

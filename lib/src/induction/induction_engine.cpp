@@ -8,8 +8,8 @@
 namespace orthoray::induction {
 
 template <class Int>
-Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<Int, 2>& grid,
-                const lattice::PieceTable<Int>& table, const SolveOptions& options,
+Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
+                const shoot::PieceTable<Int>& table, const SolveOptions& options,
                 std::uint64_t reflections) {
     using Clock = std::chrono::steady_clock;
     const auto begin = Clock::now();
@@ -69,16 +69,16 @@ Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<I
 }
 
 template Decision decide<std::int64_t>(const lattice::LatticeScene&,
-                                       const lattice::UniformGrid<std::int64_t, 2>&,
-                                       const lattice::PieceTable<std::int64_t>&,
-                                       const SolveOptions&, std::uint64_t);
+                                       const shoot::UniformGrid<std::int64_t, 2>&,
+                                       const shoot::PieceTable<std::int64_t>&, const SolveOptions&,
+                                       std::uint64_t);
 template Decision decide<lattice::int128_t>(const lattice::LatticeScene&,
-                                            const lattice::UniformGrid<lattice::int128_t, 2>&,
-                                            const lattice::PieceTable<lattice::int128_t>&,
+                                            const shoot::UniformGrid<lattice::int128_t, 2>&,
+                                            const shoot::PieceTable<lattice::int128_t>&,
                                             const SolveOptions&, std::uint64_t);
 template Decision decide<Integer>(const lattice::LatticeScene&,
-                                  const lattice::UniformGrid<Integer, 2>&,
-                                  const lattice::PieceTable<Integer>&, const SolveOptions&,
+                                  const shoot::UniformGrid<Integer, 2>&,
+                                  const shoot::PieceTable<Integer>&, const SolveOptions&,
                                   std::uint64_t);
 
 } // namespace orthoray::induction

@@ -33,8 +33,8 @@ struct Decision {
 // far, for the monitor). No answer and no limit means the answer needs more
 // reflections than options.max_steps allows: the caller simulates up to it.
 template <class Int>
-Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<Int, 2>& grid,
-                const lattice::PieceTable<Int>& table, const SolveOptions& options,
+Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
+                const shoot::PieceTable<Int>& table, const SolveOptions& options,
                 std::uint64_t reflections);
 
 } // namespace orthoray::induction
