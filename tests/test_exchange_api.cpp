@@ -3,6 +3,7 @@
 // inducing it answers as simulation does, and an observer sees exactly the
 // steps the induction engine reports.
 #include "support/case_count.hpp"
+#include "support/counting_observer.hpp"
 #include "support/random_scene.hpp"
 
 #include "orthoray/exchange.hpp"
@@ -19,25 +20,17 @@ using namespace orthoray;
 
 namespace {
 
-// Counts what it is shown.
-class CountingObserver : public InductionObserver {
-public:
-    int begun = 0;
-    std::size_t pieces = 0;
-    Integer states;
-    std::uint64_t steps = 0, rounds = 0;
-    void begin(const IntervalExchange& exchange) override {
-        ++begun;
-        pieces = exchange.pieces.size();
-        states = exchange.size;
-    }
-    void top(std::size_t, std::size_t) override { ++steps; }
-    void bottom(std::size_t, std::size_t) override { ++steps; }
-    void equal(std::size_t, std::size_t) override { ++steps; }
-    void invariant(std::size_t) override { ++steps; }
-    void top_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-    void bottom_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-};
+using test::CountingObserver;
+
+// A random 2D scene, mostly boxed so that the ray goes on past its first
+// segments; the target half the time on the trajectory.
+Scene random_2d_scene(std::mt19937_64& rng) {
+    test::RandomSceneShape shape;
+    shape.box_chance = 0.9;
+    Scene scene = test::random_scene(rng, shape);
+    scene.target = test::random_target(rng, scene, shape);
+    return scene;
+}
 
 // Intervals [from, from + length) that must tile [0, size) exactly once.
 bool tiles(std::vector<std::pair<Integer, Integer>> intervals, const Integer& size) {
@@ -75,13 +68,10 @@ std::string summary(const Answer& a) {
 TEST_CASE("the exchange of random 2D scenes is a bijection and induces to the simulated answer",
           "[exchange-api]") {
     std::mt19937_64 rng(1919);
-    test::RandomSceneShape shape;
-    shape.box_chance = 0.9;
     const int goal = test::case_count(300);
     int compared = 0, cycles = 0, events = 0, without = 0;
     for (int attempt = 0; compared < goal && attempt < 20 * goal; ++attempt) {
-        Scene scene = test::random_scene(rng, shape);
-        scene.target = test::random_target(rng, scene, shape);
+        const Scene scene = random_2d_scene(rng);
         INFO("scene:\n" << write_scene(scene));
         const std::optional<IntervalExchange> exchange = exchange_of(scene);
         SolveOptions o;
@@ -129,13 +119,10 @@ TEST_CASE("the exchange of random 2D scenes is a bijection and induces to the si
 TEST_CASE("an observer in the options sees the exchange and the steps the answer reports",
           "[exchange-api]") {
     std::mt19937_64 rng(2019);
-    test::RandomSceneShape shape;
-    shape.box_chance = 0.9;
     const int goal = test::case_count(100);
     int induced = 0, accelerated = 0;
     for (int attempt = 0; induced < goal && attempt < 20 * goal; ++attempt) {
-        Scene scene = test::random_scene(rng, shape);
-        scene.target = test::random_target(rng, scene, shape);
+        const Scene scene = random_2d_scene(rng);
         INFO("scene:\n" << write_scene(scene));
         CountingObserver observer;
         SolveOptions o;

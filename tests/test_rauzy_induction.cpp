@@ -3,6 +3,8 @@
 // the closed form of a rotation far too long to iterate.
 #include "induction/rauzy_induction.hpp"
 
+#include "support/counting_observer.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -66,18 +68,6 @@ InducedOrbit iterate(const IntervalExchange& e) {
     }
 }
 
-// Counts the steps a sink receives, to hold the engine's own count to it.
-class CountingSink : public InductionObserver {
-public:
-    std::uint64_t steps = 0, rounds = 0;
-    void top(std::size_t, std::size_t) override { ++steps; }
-    void bottom(std::size_t, std::size_t) override { ++steps; }
-    void equal(std::size_t, std::size_t) override { ++steps; }
-    void invariant(std::size_t) override { ++steps; }
-    void top_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-    void bottom_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-};
-
 } // namespace
 
 TEST_CASE("induction finds the orbit of x on random small exchanges", "[rauzy]") {
@@ -100,7 +90,8 @@ TEST_CASE("induction finds the orbit of x on random small exchanges", "[rauzy]")
                              : ExchangeEvent::none;
         }
         const IntervalExchange e = make_exchange(lengths, order, events);
-        CountingSink sink;
+        // The steps an observer receives, to hold the engine's own count to it.
+        test::CountingObserver sink;
         const auto induced = induce(e, &sink, {});
         REQUIRE(induced);
         const InducedOrbit expected = iterate(e);
