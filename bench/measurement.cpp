@@ -63,11 +63,11 @@ ChildResult run_exact(const Scene& scene, std::uint64_t steps, Engine engine) {
     r.reason = a.reason;
     r.reflections = to_u64(a.reflections);
     r.performed = performed(a.reason, r.reflections);
-    r.setup = a.setup.seconds;
-    r.pieces = a.setup.pieces;
-    r.cells = a.setup.cells;
-    copy(r.shooter, a.shooter);
-    copy(r.arithmetic, a.arithmetic);
+    r.setup = a.stats.setup.seconds;
+    r.pieces = a.stats.setup.pieces;
+    r.cells = a.stats.setup.cells;
+    copy(r.shooter, to_string(a.shooter));
+    copy(r.arithmetic, to_string(a.arithmetic));
     return r;
 }
 

@@ -13,6 +13,7 @@
 
 using namespace orthoray;
 using namespace orthoray::lattice;
+using namespace orthoray::shoot;
 
 namespace {
 

@@ -14,6 +14,7 @@
 
 using namespace orthoray;
 using namespace orthoray::lattice;
+using namespace orthoray::shoot;
 
 namespace {
 
@@ -139,6 +140,6 @@ Scene mirror_box(int n, bool crowded) {
 TEST_CASE("3D solves use the cross-section grid unless elements crowd", "[section]") {
     SolveOptions options;
     options.max_steps = 1000;
-    CHECK(solve(mirror_box(2000, false), options).shooter == "section");
-    CHECK(solve(mirror_box(2000, true), options).shooter == "bvh");
+    CHECK(solve(mirror_box(2000, false), options).shooter == ShooterUsed::section);
+    CHECK(solve(mirror_box(2000, true), options).shooter == ShooterUsed::bvh);
 }

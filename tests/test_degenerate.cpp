@@ -75,7 +75,7 @@ void expect(const char* text, Reason reason, unsigned long reflections, bool gra
         orthoray::CertificateWriter writer(certificate, scene);
         orthoray::SolveOptions options;
         options.engine = engine;
-        options.path = &writer;
+        writer.attach(options);
         writer.finish(orthoray::solve(scene, options));
         const orthoray::Verdict verdict = orthoray::verify_certificate(scene, certificate);
         INFO("certificate of the " << (engine == Engine::lattice ? "lattice" : "reference")

@@ -1169,10 +1169,11 @@ TEST_CASE("the induction engine's certificates of random scenes verify, tampered
                                                     : orthoray::CertificateFormat::text);
             orthoray::SolveOptions o;
             o.engine = orthoray::Engine::induction;
-            o.path = &writer;
+            writer.attach(o);
             const orthoray::Answer answer = orthoray::solve(scene, o);
             writer.finish(answer);
-            if (answer.engine != "induction") continue; // answered on the first segments
+            if (answer.engine != orthoray::EngineUsed::induction)
+                continue; // answered on the first segments
             const std::string text = out.str();
             INFO("scene:\n" << orthoray::write_scene(scene) << "certificate:\n" << text);
             REQUIRE(text.find("induction") != std::string::npos);
@@ -1250,7 +1251,7 @@ TEST_CASE("the engines' certificates of huge family instances verify",
             orthoray::CertificateWriter writer(out, g.scene);
             orthoray::SolveOptions o;
             o.engine = engine;
-            o.path = &writer;
+            writer.attach(o);
             const orthoray::Answer answer = orthoray::solve(g.scene, o);
             writer.finish(answer);
             REQUIRE(answer.decided());
@@ -1258,7 +1259,7 @@ TEST_CASE("the engines' certificates of huge family instances verify",
                 CHECK(answer.reason == g.expect->reason);
                 CHECK(answer.reflections == g.expect->reflections);
             }
-            induced += answer.engine == "induction";
+            induced += answer.engine == orthoray::EngineUsed::induction;
             const Outcome outcome = verify(g.scene, out.str());
             INFO("verify said: " << outcome.message);
             CHECK(outcome.message == std::string("valid: ") + orthoray::to_string(answer.reason) +

@@ -51,7 +51,7 @@ void check_scene(const Scene& scene, Tally& tally) {
     o.shooter = Shooter::pieces;
     REQUIRE(summary(solve(scene, o)) == summary(simulated));
     ++tally.scenes;
-    if (induced.engine != "induction") return;
+    if (induced.engine != EngineUsed::induction) return;
     ++tally.induced;
     tally.referenced += reference.decided();
     ++tally.by_reason[static_cast<int>(induced.reason)];
@@ -185,7 +185,7 @@ TEST_CASE("induction decides huge boxes and hallways", "[induction]") {
         const Answer a = solve_with(g.scene, Engine::induction);
         REQUIRE(a.reason == Reason::hit);
         REQUIRE(a.reflections == box_corner_reflections(m, n));
-        REQUIRE(a.engine == "induction");
+        REQUIRE(a.engine == EngineUsed::induction);
     }
     // The hallway: y = 0 and y = 1 for x in [0, 10^30], slope just under
     // 1/2, so about 5 * 10^29 reflections; then the ray escapes past the end.

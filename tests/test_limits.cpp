@@ -91,7 +91,7 @@ TEST_CASE("a monitor stops each simulation engine with the reflections it perfor
             options.engine = engine;
             options.shooter = shooter;
             options.monitor = &monitor;
-            options.path = &writer;
+            writer.attach(options);
             const Answer answer = solve(scene, options);
             writer.finish(answer);
             CHECK(monitor.polls() == 5);

@@ -10,6 +10,7 @@
 
 using namespace orthoray;
 using namespace orthoray::lattice;
+using namespace orthoray::shoot;
 
 namespace {
 

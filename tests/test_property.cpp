@@ -91,7 +91,7 @@ void check_scene(const Scene& scene, Tally& tally) {
     CertificateWriter writer(cert, scene);
     SolveOptions o;
     o.max_steps = step_cap;
-    o.path = &writer;
+    writer.attach(o);
     const Answer certified = solve(scene, o);
     writer.finish(certified);
     REQUIRE(summary(certified) == summary(lattice));

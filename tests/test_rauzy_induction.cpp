@@ -3,6 +3,8 @@
 // the closed form of a rotation far too long to iterate.
 #include "induction/rauzy_induction.hpp"
 
+#include "support/counting_observer.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,9 +18,9 @@ namespace {
 
 // Pieces with these lengths (piece 0 has length 1: x), images in the order
 // `image_order`, and the given events.
-IntervalExchange exchange_of(const std::vector<long>& lengths,
-                             const std::vector<std::size_t>& image_order,
-                             const std::vector<EventKind>& events) {
+IntervalExchange make_exchange(const std::vector<long>& lengths,
+                               const std::vector<std::size_t>& image_order,
+                               const std::vector<ExchangeEvent>& events) {
     IntervalExchange e;
     Integer at = 0;
     for (std::size_t i = 0; i < lengths.size(); ++i) {
@@ -26,10 +28,10 @@ IntervalExchange exchange_of(const std::vector<long>& lengths,
         p.start = at;
         p.length = lengths[i];
         at += lengths[i];
-        p.hit = events[i] == EventKind::hit;
-        p.kind = events[i] == EventKind::escape     ? PieceKind::escape
-                 : events[i] == EventKind::absorbed ? PieceKind::absorbed
-                                                    : PieceKind::reflect;
+        p.hit = events[i] == ExchangeEvent::hit;
+        p.kind = events[i] == ExchangeEvent::escape     ? PieceKind::escape
+                 : events[i] == ExchangeEvent::absorbed ? PieceKind::absorbed
+                                                        : PieceKind::reflect;
         e.pieces.push_back(p);
     }
     e.size = at;
@@ -42,18 +44,18 @@ IntervalExchange exchange_of(const std::vector<long>& lengths,
 }
 
 // The orbit of 0, one point at a time.
-OrbitOfFirst iterate(const IntervalExchange& e) {
-    OrbitOfFirst orbit;
+InducedOrbit iterate(const IntervalExchange& e) {
+    InducedOrbit orbit;
     Integer p = 0;
     for (long t = 0;; ++t) {
         std::size_t i = 0;
         while (!(e.pieces[i].start <= p && p < e.pieces[i].start + e.pieces[i].length)) ++i;
         const ExchangePiece& piece = e.pieces[i];
-        const EventKind event = piece.hit                           ? EventKind::hit
-                                : piece.kind == PieceKind::escape   ? EventKind::escape
-                                : piece.kind == PieceKind::absorbed ? EventKind::absorbed
-                                                                    : EventKind::none;
-        if (event != EventKind::none) {
+        const ExchangeEvent event = piece.hit                           ? ExchangeEvent::hit
+                                    : piece.kind == PieceKind::escape   ? ExchangeEvent::escape
+                                    : piece.kind == PieceKind::absorbed ? ExchangeEvent::absorbed
+                                                                        : ExchangeEvent::none;
+        if (event != ExchangeEvent::none) {
             orbit.event = event;
             orbit.offset = t;
             return orbit;
@@ -65,18 +67,6 @@ OrbitOfFirst iterate(const IntervalExchange& e) {
         }
     }
 }
-
-// Counts the steps a sink receives, to hold the engine's own count to it.
-class CountingSink : public StepSink {
-public:
-    std::uint64_t steps = 0, rounds = 0;
-    void top(std::size_t, std::size_t) override { ++steps; }
-    void bottom(std::size_t, std::size_t) override { ++steps; }
-    void equal(std::size_t, std::size_t) override { ++steps; }
-    void invariant(std::size_t) override { ++steps; }
-    void top_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-    void bottom_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-};
 
 } // namespace
 
@@ -91,22 +81,23 @@ TEST_CASE("induction finds the orbit of x on random small exchanges", "[rauzy]")
         std::vector<std::size_t> order(k);
         std::iota(order.begin(), order.end(), std::size_t{0});
         std::shuffle(order.begin(), order.end(), rng);
-        std::vector<EventKind> events(k, EventKind::none);
+        std::vector<ExchangeEvent> events(k, ExchangeEvent::none);
         for (auto& ev : events) {
             const int roll = std::uniform_int_distribution<int>(0, 9)(rng);
-            ev = roll == 0   ? EventKind::hit
-                 : roll == 1 ? EventKind::escape
-                 : roll == 2 ? EventKind::absorbed
-                             : EventKind::none;
+            ev = roll == 0   ? ExchangeEvent::hit
+                 : roll == 1 ? ExchangeEvent::escape
+                 : roll == 2 ? ExchangeEvent::absorbed
+                             : ExchangeEvent::none;
         }
-        const IntervalExchange e = exchange_of(lengths, order, events);
-        CountingSink sink;
+        const IntervalExchange e = make_exchange(lengths, order, events);
+        // The steps an observer receives, to hold the engine's own count to it.
+        test::CountingObserver sink;
         const auto induced = induce(e, &sink, {});
         REQUIRE(induced);
-        const OrbitOfFirst expected = iterate(e);
+        const InducedOrbit expected = iterate(e);
         INFO("trial " << trial);
         REQUIRE(induced->event == expected.event);
-        if (expected.event == EventKind::none) {
+        if (expected.event == ExchangeEvent::none) {
             REQUIRE(induced->period == expected.period);
             ++cycles;
         } else {
@@ -142,7 +133,7 @@ TEST_CASE("induction gives a rotation's period in few steps", "[rauzy]") {
         REQUIRE(orbit);
         Integer g;
         mpz_gcd(g.get_mpz_t(), n.get_mpz_t(), a.get_mpz_t());
-        REQUIRE(orbit->event == EventKind::none);
+        REQUIRE(orbit->event == ExchangeEvent::none);
         REQUIRE(orbit->period == n / g);
         // Acceleration makes it Euclid's algorithm: O(log N) steps.
         CHECK(orbit->steps < 400);
@@ -159,7 +150,7 @@ TEST_CASE("induction takes about k log N steps, and stops when asked", "[rauzy]"
     std::vector<std::size_t> order(k);
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::shuffle(order.begin(), order.end(), rng);
-    const IntervalExchange e = exchange_of(lengths, order, std::vector<EventKind>(k));
+    const IntervalExchange e = make_exchange(lengths, order, std::vector<ExchangeEvent>(k));
     int polls = 0;
     CHECK_FALSE(induce(e, nullptr, [&](std::uint64_t) { return ++polls > 0; }));
     CHECK(polls == 1);

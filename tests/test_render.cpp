@@ -195,7 +195,7 @@ TEST_CASE("a certificate's path draws like the solver's, in both formats", "[ren
             std::stringstream cert;
             orthoray::CertificateWriter writer(cert, scene, format);
             orthoray::SolveOptions options;
-            options.path = &writer;
+            writer.attach(options);
             writer.finish(orthoray::solve(scene, options));
 
             SceneRenderer renderer(scene);

@@ -27,20 +27,20 @@ namespace {
 // A random exchange: piece 0 is x = [0, 1), the others have lengths in
 // [1, max_length], images in a random order, and an event one time in ten
 // each (hit, escape or absorbed).
-induction::IntervalExchange random_exchange(std::mt19937_64& rng, std::int64_t max_length) {
+IntervalExchange random_exchange(std::mt19937_64& rng, std::int64_t max_length) {
     const auto k = static_cast<std::size_t>(uniform(rng, 1, 9));
-    induction::IntervalExchange e;
+    IntervalExchange e;
     Integer at = 0;
     for (std::size_t i = 0; i < k; ++i) {
-        induction::ExchangePiece p;
+        ExchangePiece p;
         p.start = at;
         p.length = i == 0 ? 1 : uniform(rng, 1, max_length);
         at += p.length;
         const std::int64_t roll = uniform(rng, 0, 9);
         p.hit = roll == 0;
-        p.kind = roll == 1   ? induction::PieceKind::escape
-                 : roll == 2 ? induction::PieceKind::absorbed
-                             : induction::PieceKind::reflect;
+        p.kind = roll == 1   ? PieceKind::escape
+                 : roll == 2 ? PieceKind::absorbed
+                             : PieceKind::reflect;
         e.pieces.push_back(p);
     }
     e.size = at;
@@ -58,16 +58,16 @@ induction::IntervalExchange random_exchange(std::mt19937_64& rng, std::int64_t m
     return e;
 }
 
-std::vector<check::PieceSpec> specs_of(const induction::IntervalExchange& e) {
+std::vector<check::PieceSpec> specs_of(const IntervalExchange& e) {
     std::vector<check::PieceSpec> specs;
-    for (const induction::ExchangePiece& p : e.pieces) {
+    for (const ExchangePiece& p : e.pieces) {
         check::PieceSpec s;
         s.start = p.start;
         s.length = p.length;
         s.image = p.image;
         s.hit = p.hit;
-        s.kind = p.kind == induction::PieceKind::escape     ? check::Kind::escape
-                 : p.kind == induction::PieceKind::absorbed ? check::Kind::absorbed
+        s.kind = p.kind == PieceKind::escape     ? check::Kind::escape
+                 : p.kind == PieceKind::absorbed ? check::Kind::absorbed
                                                             : check::Kind::reflect;
         specs.push_back(s);
     }
@@ -75,7 +75,7 @@ std::vector<check::PieceSpec> specs_of(const induction::IntervalExchange& e) {
 }
 
 // The engine's steps, in the certificate's words.
-class RecordedSteps : public induction::StepSink {
+class RecordedSteps : public InductionObserver {
 public:
     std::vector<check::StepSpec> steps;
     void top(std::size_t d, std::size_t r) override { add(check::StepKind::top, d, r); }
@@ -116,15 +116,15 @@ bool tiles(const check::ReplayedExchange& replay) {
     return true;
 }
 
-check::FirstEvent::Kind kind_of(induction::EventKind event) {
+check::FirstEvent::Kind kind_of(ExchangeEvent event) {
     switch (event) {
-    case induction::EventKind::hit:
+    case ExchangeEvent::hit:
         return check::FirstEvent::hit;
-    case induction::EventKind::escape:
+    case ExchangeEvent::escape:
         return check::FirstEvent::escape;
-    case induction::EventKind::absorbed:
+    case ExchangeEvent::absorbed:
         return check::FirstEvent::absorbed;
-    case induction::EventKind::none:
+    case ExchangeEvent::none:
         break;
     }
     return check::FirstEvent::none;
@@ -140,7 +140,7 @@ TEST_CASE("the replayed exchange follows the induction on random exchanges", "[r
         // Small lengths, then lengths up to 2^40, where the accelerated
         // (cycle) steps take over.
         const std::int64_t max_length = trial % 2 ? std::int64_t{1} << 40 : (trial % 4 ? 40 : 4);
-        const induction::IntervalExchange e = random_exchange(rng, max_length);
+        const IntervalExchange e = random_exchange(rng, max_length);
         RecordedSteps recorded;
         const auto orbit = induction::induce(e, &recorded, {});
         REQUIRE(orbit);
@@ -159,7 +159,7 @@ TEST_CASE("the replayed exchange follows the induction on random exchanges", "[r
         REQUIRE(replay.steps_applied() == orbit->steps);
         const check::ReplayedPiece& x = replay.first_alone();
         REQUIRE(x.event.kind == kind_of(orbit->event));
-        if (orbit->event == induction::EventKind::none) {
+        if (orbit->event == ExchangeEvent::none) {
             REQUIRE(x.return_time == orbit->period);
             ++cycles;
         } else {
@@ -180,7 +180,7 @@ TEST_CASE("the replayed exchange rejects a step naming another piece", "[replay]
     int tampered = 0;
     const int trials = test::case_count(1000);
     for (int trial = 0; trial < trials; ++trial) {
-        const induction::IntervalExchange e = random_exchange(rng, 40);
+        const IntervalExchange e = random_exchange(rng, 40);
         RecordedSteps recorded;
         REQUIRE(induction::induce(e, &recorded, {}));
         if (recorded.steps.empty()) continue;
