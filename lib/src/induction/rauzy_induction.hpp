@@ -47,10 +47,10 @@ public:
 
 struct OrbitOfFirst {
     EventKind event = EventKind::none;
-    Integer offset;           // the event happens at T^offset(x)
-    Integer period;           // the return time of x (meaningful without an event)
-    std::uint64_t steps = 0;  // steps taken, a cycle step counting once
-    std::uint64_t rounds = 0; // of which accelerated (cycle) steps
+    Integer offset;              // the event happens at T^offset(x)
+    Integer period;              // the return time of x (meaningful without an event)
+    std::uint64_t steps = 0;     // steps taken, a cycle step counting once
+    std::uint64_t rounds = 0;    // of which accelerated (cycle) steps
     const char* arithmetic = ""; // the integers it ran on: "int64", "int128" or "gmp"
 };
 
