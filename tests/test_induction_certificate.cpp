@@ -897,7 +897,8 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
 
 // ----------------------------------------------------------------- random --
 
-TEST_CASE("brute-force induction certificates of random scenes verify", "[induction-certificate]") {
+TEST_CASE("brute-force induction certificates of random scenes verify",
+          "[induction-certificate][slow]") {
     std::mt19937_64 rng(20261122);
     orthoray::test::RandomSceneShape shape;
     shape.max_elements = 10;
@@ -1138,7 +1139,7 @@ std::string tamper_once(const std::string& text, std::mt19937_64& rng, std::stri
 } // namespace
 
 TEST_CASE("the induction engine's certificates of random scenes verify, tampered ones do not",
-          "[induction-certificate][engine]") {
+          "[induction-certificate][engine][slow]") {
     std::mt19937_64 rng(8101);
     struct Family {
         orthoray::test::RandomSceneShape shape;
@@ -1213,7 +1214,7 @@ TEST_CASE("the induction engine's certificates of random scenes verify, tampered
 }
 
 TEST_CASE("the engines' certificates of huge family instances verify",
-          "[induction-certificate][engine]") {
+          "[induction-certificate][engine][slow]") {
     using orthoray::BoxFamily;
     std::vector<orthoray::GeneratedScene> scenes;
     const Integer big_a = (Integer(1) << 61) - 1, big_b("1000000000000000000");

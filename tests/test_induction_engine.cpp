@@ -73,7 +73,7 @@ void run_family(std::uint64_t seed, int count, test::RandomSceneShape shape, Tal
 } // namespace
 
 TEST_CASE("induction agrees with simulation and the reference on random 2D scenes",
-          "[induction][property]") {
+          "[induction][property][slow]") {
     Tally tally;
     // Rational and integral coordinates, crowded scenes, long thin ones.
     run_family(7001, test::case_count(2000), {2, 12, 6, 3, 3}, tally);

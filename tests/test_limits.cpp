@@ -163,7 +163,7 @@ TEST_CASE("a monitor stops each simulation engine with the reflections it perfor
     }
 }
 
-TEST_CASE("a monitor stops the graph engine", "[limits]") {
+TEST_CASE("a monitor stops the graph engine", "[limits][slow]") {
     // Some 2^12 points a face: about 2 * 10^5 states, polled every 1024.
     const Scene scene = long_orbit(6);
     StopAfterPolls monitor(1);
@@ -196,7 +196,7 @@ TEST_CASE("a monitor that never stops changes no answer", "[limits]") {
     CHECK(capped.reflections == 12345);
 }
 
-TEST_CASE("solve --timeout stops a long run with limit time", "[limits][cli]") {
+TEST_CASE("solve --timeout stops a long run with limit time", "[limits][cli][slow]") {
     const fs::path dir = fresh_dir("timeout");
     const std::string scene = scene_file(dir, long_orbit(40));
     const auto r = run_cli("solve --json --timeout 0.5 '" + scene + "' --certificate '" +
@@ -245,7 +245,8 @@ TEST_CASE("SIGTERM and SIGINT stop solve with the usual output and a complete ce
 }
 
 #ifndef ORTHORAY_SANITIZE // sanitizers reserve terabytes of address space and abort on failure
-TEST_CASE("solve --max-memory turns running out of memory into limit memory", "[limits][cli]") {
+TEST_CASE("solve --max-memory turns running out of memory into limit memory",
+          "[limits][cli][slow]") {
     // The state graph of this box has 4 * 2 * (120000 + 120001) states, just
     // under the graph engine's cap, in map entries of some 100 bytes: far
     // beyond 20 MB.
@@ -264,7 +265,7 @@ TEST_CASE("solve --max-memory turns running out of memory into limit memory", "[
 }
 #endif
 
-TEST_CASE("limit options reject what is not a limit", "[limits][cli]") {
+TEST_CASE("limit options reject what is not a limit", "[limits][cli][slow]") {
     for (const std::string bad : {"--timeout 0", "--timeout -1", "--timeout x", "--timeout 1e300",
                                   "--max-memory 0", "--max-memory lots"}) {
         CAPTURE(bad);
@@ -299,7 +300,8 @@ std::string read_terminal(int terminal, const std::string& until = {}) {
 
 } // namespace
 
-TEST_CASE("a long run shows a progress line on a terminal only, and erases it", "[limits][cli]") {
+TEST_CASE("a long run shows a progress line on a terminal only, and erases it",
+          "[limits][cli][slow]") {
     // Three runs: stderr to a file, to a terminal with --quiet, and to a
     // terminal. The first two are stepping before the third starts, so when
     // the third draws its line (after its first second) both are past the

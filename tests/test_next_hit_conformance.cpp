@@ -155,7 +155,7 @@ Integer near_bound() {
 } // namespace
 
 TEMPLATE_TEST_CASE("every next-hit structure matches brute force in 1D, 2D and 3D",
-                   "[shoot][conformance]", std::int64_t, int128_t, Integer) {
+                   "[shoot][conformance][slow]", std::int64_t, int128_t, Integer) {
     using Int = TestType;
     check_all_random_shots<Int, 1>(41, scenes_for<Int>(100), 40, 100, 1);
     check_all_random_shots<Int, 2>(42, scenes_for<Int>(200), 40, 100, 1);
@@ -172,7 +172,7 @@ TEMPLATE_TEST_CASE("every next-hit structure is exact near its integer type's bo
 }
 
 TEMPLATE_TEST_CASE("every next-hit structure follows trajectories like brute force",
-                   "[shoot][conformance]", std::int64_t, int128_t, Integer) {
+                   "[shoot][conformance][slow]", std::int64_t, int128_t, Integer) {
     using Int = TestType;
     const int steps = scenes_for<Int>(2800);
     check_trajectory<Int, 2>(61, 200, steps);
@@ -181,7 +181,7 @@ TEMPLATE_TEST_CASE("every next-hit structure follows trajectories like brute for
 }
 
 TEMPLATE_TEST_CASE("piece tables match brute force from every lattice point of every mirror",
-                   "[shoot][conformance][pieces]", std::int64_t, int128_t, Integer) {
+                   "[shoot][conformance][pieces][slow]", std::int64_t, int128_t, Integer) {
     // A mirror's pieces answer for the states on that mirror only, so the
     // queries are all of them: every lattice point in every direction.
     using Int = TestType;
