@@ -26,7 +26,7 @@ using test::CountingObserver;
 // segments; the target half the time on the trajectory.
 Scene random_2d_scene(std::mt19937_64& rng) {
     test::RandomSceneShape shape;
-    shape.box_chance = 0.9;
+    shape.box_percent = 90;
     Scene scene = test::random_scene(rng, shape);
     scene.target() = test::random_target(rng, scene, shape);
     return scene;

@@ -48,7 +48,7 @@ const ExchangePiece& piece_at(const IntervalExchange& e, const Integer& c) {
 
 } // namespace
 
-TEST_CASE("the exchange is the step map on every state", "[exchange]") {
+TEST_CASE("the exchange is the step map on every state", "[exchange][slow]") {
     std::mt19937_64 rng(2026);
     int reflecting = 0, dead = 0, hits = 0;
     for (int scene = 0; scene < 600; ++scene) {

@@ -2,6 +2,7 @@
 // map point by point on thousands of random small exchanges, and against
 // the closed form of a rotation far too long to iterate.
 #include "induction/rauzy_induction.hpp"
+#include "support/portable_random.hpp"
 
 #include "support/counting_observer.hpp"
 
@@ -74,16 +75,15 @@ TEST_CASE("induction finds the orbit of x on random small exchanges", "[rauzy]")
     std::mt19937_64 rng(11);
     int with_event = 0, cycles = 0, accelerated = 0;
     for (int trial = 0; trial < 4000; ++trial) {
-        const std::size_t k = std::uniform_int_distribution<std::size_t>(1, 9)(rng);
+        const std::size_t k = test::pick_index(rng, 1, 9);
         std::vector<long> lengths(k, 1);
-        for (std::size_t i = 1; i < k; ++i)
-            lengths[i] = std::uniform_int_distribution<long>(1, trial % 2 ? 40 : 4)(rng);
+        for (std::size_t i = 1; i < k; ++i) lengths[i] = test::pick(rng, 1, trial % 2 ? 40 : 4);
         std::vector<std::size_t> order(k);
         std::iota(order.begin(), order.end(), std::size_t{0});
-        std::shuffle(order.begin(), order.end(), rng);
+        test::shuffle(order, rng);
         std::vector<ExchangeEvent> events(k, ExchangeEvent::none);
         for (auto& ev : events) {
-            const int roll = std::uniform_int_distribution<int>(0, 9)(rng);
+            const int roll = test::pick(rng, 0, 9);
             ev = roll == 0   ? ExchangeEvent::hit
                  : roll == 1 ? ExchangeEvent::escape
                  : roll == 2 ? ExchangeEvent::absorbed
@@ -145,11 +145,10 @@ TEST_CASE("induction takes about k log N steps, and stops when asked", "[rauzy]"
     std::mt19937_64 rng(5);
     const std::size_t k = 2000;
     std::vector<long> lengths(k, 1);
-    for (std::size_t i = 1; i < k; ++i)
-        lengths[i] = std::uniform_int_distribution<long>(1, long{1} << 60)(rng);
+    for (std::size_t i = 1; i < k; ++i) lengths[i] = uniform(rng, 1, std::int64_t{1} << 60);
     std::vector<std::size_t> order(k);
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::shuffle(order.begin(), order.end(), rng);
+    test::shuffle(order, rng);
     const IntervalExchange e = make_exchange(lengths, order, std::vector<ExchangeEvent>(k));
     int polls = 0;
     CHECK_FALSE(induce(e, nullptr, [&](std::uint64_t) { return ++polls > 0; }));
