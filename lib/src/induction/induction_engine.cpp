@@ -23,14 +23,14 @@ Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<I
         x[j] = scene.start[j] + (((scene.start_direction >> j) & 1u)
                                      ? Integer(-lattice::to_integer(first.t))
                                      : lattice::to_integer(first.t));
-    const IntervalExchange exchange =
-        build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip);
-
     auto stop = [&](std::uint64_t) {
         if (!options.monitor) return false;
         decision.limit = options.monitor->poll(reflections);
         return decision.limit.has_value();
     };
+    const IntervalExchange exchange =
+        build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip);
+    if (stop(0)) return decision; // building it takes a while on huge numbers
     const std::optional<OrbitOfFirst> orbit = induce(exchange, nullptr, stop);
     if (!orbit) return decision;
 
