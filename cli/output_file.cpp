@@ -125,7 +125,7 @@ OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& 
     int fd = -1;
     if (exists && !S_ISREG(target.st_mode)) {
         fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-        if (fd < 0) throw WriteError("cannot write " + what_ + ": " + reason(errno));
+        if (fd < 0) cannot_create(errno);
     } else {
         // The temporary file sits beside the target, so the rename stays on
         // one file system and is atomic; its name says what it is, should a
@@ -135,7 +135,7 @@ OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& 
                                ("." + target_path.filename().string() + ".partial-XXXXXX"))
                                   .string();
         fd = ::mkstemp(pattern.data());
-        if (fd < 0) throw WriteError("cannot write " + what_ + ": " + reason(errno));
+        if (fd < 0) cannot_create(errno);
         temporary_ = pattern;
         slot_ = remember_unfinished(temporary_);
         // mkstemp makes the file private; give it the mode a plain create
@@ -158,6 +158,13 @@ OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& 
 OutputFile::~OutputFile() {
     forget_unfinished(slot_);
     if (!committed_ && !temporary_.empty()) ::unlink(temporary_.c_str());
+}
+
+// A path that cannot be opened or created (no such directory, no
+// permission) is a mistake on the command line, found before any work:
+// exit 2, as for a bad option. Failures while writing are WriteError.
+void OutputFile::cannot_create(int error) const {
+    throw UsageError("cannot write " + what_ + ": " + reason(error));
 }
 
 std::ostream& OutputFile::stream() {

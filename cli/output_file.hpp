@@ -38,6 +38,7 @@ public:
 
 private:
     class Buffer;
+    [[noreturn]] void cannot_create(int error) const;
     std::string path_, temporary_, what_;
     std::unique_ptr<Buffer> buffer_;
     std::unique_ptr<std::ostream> stream_;
