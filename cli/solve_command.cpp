@@ -202,7 +202,8 @@ Command add_solve(CLI::App& app) {
                  "reflections; answer no: it escapes to infinity, is absorbed, or is periodic\n"
                  "(reason cycle; `period` reflections per period) without passing the target.\n"
                  "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 a limit (--max-steps,\n"
-                 "--timeout, --max-memory, SIGINT or SIGTERM) stopped the run first.");
+                 "--timeout, --max-memory, SIGINT or SIGTERM) stopped the run first, 5 the\n"
+                 "certificate or the answer could not be written (docs/limits.md).");
     cmd->add_option("FILE", args->file,
                     "the scene: .scene text (docs/scene-format.md) or JSON (docs/scene-json.md)")
         ->required();
