@@ -27,7 +27,8 @@ void require_rejected(const std::string& args, const std::string& expected) {
 
 } // namespace
 
-TEST_CASE("--timeout takes only a finite number of seconds above 0", "[option_ranges][cli]") {
+TEST_CASE("the option --timeout takes only a finite number of seconds above 0",
+          "[option_ranges][cli]") {
     for (const std::string& command :
          std::vector<std::string>{"solve " + quote(box), "render " + quote(box) + " -o x.svg",
                                   "bounds " + quote(box), "convert " + quote(box) + " x.json"})
@@ -39,7 +40,8 @@ TEST_CASE("--timeout takes only a finite number of seconds above 0", "[option_ra
     CHECK(run_cli("solve " + quote(box) + " --timeout 0.5").status == 0);
 }
 
-TEST_CASE("--max-steps and --seed take whole numbers up to 2^64 - 1", "[option_ranges][cli]") {
+TEST_CASE("the options --max-steps and --seed take whole numbers up to 2^64 - 1",
+          "[option_ranges][cli]") {
     for (const char* value : {"18446744073709551616", "99999999999999999999", "-1", "1e3",
                               "100000000000000000000000", "0x10", "+5", "''"}) {
         require_rejected("solve " + quote(box) + " --max-steps " + value,

@@ -111,7 +111,7 @@ TEST_CASE("an output is refused when it has no name or names an input", "[output
     CHECK(run_cli("generate box -o ''").status == 2);
 }
 
-TEST_CASE("--engine graph with --certificate is a usage error, and writes nothing",
+TEST_CASE("solve with --engine graph and --certificate is a usage error, and writes nothing",
           "[output_writes][cli]") {
     const TempDir dir;
     const auto r =
