@@ -4,12 +4,14 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
 #include "scene_format_option.hpp"
+#include "stop_at_once.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace orthoray::cli {
@@ -18,6 +20,7 @@ namespace {
 struct BoundsArgs {
     std::string file, format;
     bool json = false, no_pieces = false;
+    double timeout = 0;
 };
 
 // Lattice axes, named after the scene axes they scale.
@@ -85,7 +88,9 @@ Command add_bounds(CLI::App& app) {
     add_scene_format_option(cmd, args->format);
     cmd->add_flag("--json", args->json, "print one JSON object (big integers exact)");
     cmd->add_flag("--no-pieces", args->no_pieces, "do not build the 2D piece tables");
-    return [args] {
+    CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the computation");
+    return [args, timeout] {
+        stop_at_once(timeout->count() > 0 ? std::optional<double>(args->timeout) : std::nullopt);
         const Scene scene = load_scene(args->file, scene_format_named(args->format));
         const StateBounds b = compute_bounds(scene, !args->no_pieces);
         if (args->json)

@@ -10,7 +10,8 @@
 namespace orthoray::cli {
 
 // Exit statuses of the command-line contract.
-enum Exit : int { yes = 0, no = 1, bad_input = 2, limit = 3, internal_error = 4 };
+// write_failed: an output could not be written completely (docs/limits.md).
+enum Exit : int { yes = 0, no = 1, bad_input = 2, limit = 3, internal_error = 4, write_failed = 5 };
 
 using Command = std::function<int()>;
 

@@ -2,26 +2,30 @@
 #include "commands.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
+#include "output_file.hpp"
 #include "scene_format_option.hpp"
+#include "stop_at_once.hpp"
 
-#include <fstream>
 #include <memory>
+#include <optional>
 
 namespace orthoray::cli {
 namespace {
 
 struct ConvertArgs {
     std::string in, out, from, to;
+    double timeout = 0;
 };
 
-int run(const ConvertArgs& args) {
+int run(const ConvertArgs& args, const CLI::Option* timeout) {
+    stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
     const Scene scene = load_scene(args.in, scene_format_named(args.from));
     const bool json =
         resolve_scene_format(args.out, scene_format_named(args.to)) == SceneFormat::json;
     const std::string text = json ? write_scene_json(scene) : write_scene(scene);
-    std::ofstream out(args.out, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << text) || !out.flush())
-        throw UsageError("cannot write the scene file '" + args.out + "'");
+    OutputFile out(args.out, {args.in}, "the scene");
+    out.stream() << text;
+    out.commit();
     return yes;
 }
 
@@ -35,12 +39,14 @@ Command add_convert(CLI::App& app) {
                    "Example:\n"
                    "  orthoray convert instances/2d/box-corner-3x5.scene box.json\n"
                    "  orthoray convert box.json box.scene\n\n"
-                   "Exit status: 0 written, 2 bad input or usage.");
+                   "Exit status: 0 written, 2 bad input or usage, 3 stopped by --timeout,\n"
+                   "SIGINT or SIGTERM (OUT untouched), 5 a failed write.");
     cmd->add_option("IN", args->in, "the scene to read")->required();
     cmd->add_option("OUT", args->out, "the file to write (replaced if it exists)")->required();
     add_scene_format_option(cmd, args->from, "--from", "IN");
     add_scene_format_option(cmd, args->to, "--to", "OUT");
-    return [args] { return run(*args); };
+    CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the conversion");
+    return [args, timeout] { return run(*args, timeout); };
 }
 
 } // namespace orthoray::cli

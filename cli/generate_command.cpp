@@ -1,8 +1,9 @@
 // orthoray generate FAMILY: write a scene of one of the instance families.
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "orthoray/generate.hpp"
+#include "output_file.hpp"
 
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -138,12 +139,13 @@ int run(const GenerateArgs& args, const CLI::App& cmd) {
         throw UsageError(args.family + ": " + e.what());
     }
     const std::string text = write_generated(generated, {header});
-    if (args.output.empty()) {
+    if (cmd.get_option("--output")->count() == 0) {
         std::cout << text;
         return yes;
     }
-    std::ofstream out(args.output, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << text)) throw UsageError("cannot write the file '" + args.output + "'");
+    OutputFile out(args.output, {}, "the scene");
+    out.stream() << text;
+    out.commit();
     return yes;
 }
 
@@ -180,8 +182,9 @@ Command add_generate(CLI::App& app) {
             CLI::IsMember({"random", "box", "square", "hallway", "coprime-box", "coprime-cuboid"}));
     cmd->add_option("-o,--output", args->output, "write the scene to this file (default: stdout)");
     cmd->add_option("--seed", args->seed,
-                    "the seed of std::mt19937_64 for random (default 1); the other families are "
-                    "fixed by their parameters and only record it");
+                    "the seed of std::mt19937_64 for random (default 1), 0 to 2^64 - 1; the other "
+                    "families are fixed by their parameters and only record it")
+        ->check(whole_number_u64());
     cmd->add_option("--dim", args->dim, "random: dimension 2 or 3 (default 2)");
     cmd->add_option("--mirrors", args->mirrors, "random: number of elements (default 20)");
     cmd->add_option("--absorbers", args->absorbers,

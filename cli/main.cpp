@@ -2,7 +2,9 @@
 #include "commands.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/version.hpp"
+#include "output_file.hpp"
 
+#include <csignal>
 #include <cstdlib>
 #include <gmp.h>
 #include <iostream>
@@ -30,6 +32,10 @@ void gmp_free(void* p, std::size_t) {
 int main(int argc, char** argv) {
     using namespace orthoray::cli;
     mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
+    // A closed pipe or a file size limit must be a failed write, reported,
+    // not a silent death by SIGPIPE or SIGXFSZ in the middle of a file.
+    std::signal(SIGPIPE, SIG_IGN);
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{
         "orthoray: decides exactly whether a light ray among axis-aligned mirrors\n"
         "reaches a target point, and proves the answer with a certificate.\n\n"
@@ -39,7 +45,8 @@ int main(int argc, char** argv) {
         "  orthoray generate box --sides 3 5 -o box.scene\n"
         "  orthoray bounds box.scene\n\n"
         "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
-        "3 a resource limit (steps, time, memory) or SIGINT/SIGTERM stopped the run first.\n"
+        "3 a resource limit (steps, time, memory) or SIGINT/SIGTERM stopped the run first,\n"
+        "4 an internal error, 5 an output could not be written (full disk, closed pipe).\n"
         "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
         "docs/semantics.md. Pictures: docs/render.md."};
     app.name("orthoray");
@@ -73,13 +80,21 @@ int main(int argc, char** argv) {
         return bad_input;
     }
     try {
-        if (app.got_subcommand("solve")) return solve();
-        if (app.got_subcommand("verify")) return verify();
-        if (app.got_subcommand("generate")) return generate();
-        if (app.got_subcommand("bounds")) return bounds();
-        if (app.got_subcommand("render")) return render();
-        if (app.got_subcommand("convert")) return convert();
-        return pieces();
+        const int status = app.got_subcommand("solve")      ? solve()
+                           : app.got_subcommand("verify")   ? verify()
+                           : app.got_subcommand("generate") ? generate()
+                           : app.got_subcommand("bounds")   ? bounds()
+                           : app.got_subcommand("render")   ? render()
+                           : app.got_subcommand("convert")  ? convert()
+                                                            : pieces();
+        finish_standard_output();
+        return status;
+    } catch (const WriteError& e) {
+        std::cerr << "orthoray: " << e.what() << '\n';
+        return write_failed;
+    } catch (const orthoray::ReadInterrupted& e) {
+        std::cerr << "orthoray: " << e.what() << '\n';
+        return limit;
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';
         return bad_input;

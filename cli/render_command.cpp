@@ -4,11 +4,15 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/render.hpp"
 #include "orthoray/solve.hpp"
+#include "output_file.hpp"
+#include "run_monitor.hpp"
 #include "scene_format_option.hpp"
+#include "stop_at_once.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -24,6 +28,8 @@ namespace {
 struct RenderArgs {
     std::string file, out, certificate, format;
     std::uint64_t steps = 1000;
+    double timeout = 0;
+    bool quiet = false;
 };
 
 // Passes on the first `limit` segments of a path (limit + 1 points), and
@@ -79,44 +85,61 @@ void convert_to_png(const std::string& svg, const std::string& png) {
         throw UsageError("rsvg-convert could not write '" + png + "'");
 }
 
-void write_picture(const SceneRenderer& renderer, const std::string& out) {
-    const bool png = out.size() > 4 && (out.ends_with(".png") || out.ends_with(".PNG"));
-    std::string svg_path = out;
-    if (png) {
-        std::string pattern =
-            (std::filesystem::temp_directory_path() / "orthoray-render-XXXXXX").string();
-        const int fd = mkstemp(pattern.data());
-        if (fd < 0) throw UsageError("cannot create a temporary file for the SVG");
+// A file in the temporary directory, removed when this goes out of scope.
+class ScratchFile {
+public:
+    explicit ScratchFile(const char* suffix) {
+        path_ =
+            (std::filesystem::temp_directory_path() / "orthoray-render-XXXXXX").string() + suffix;
+        const int fd = mkstemps(path_.data(), static_cast<int>(std::strlen(suffix)));
+        if (fd < 0)
+            throw WriteError("cannot create a temporary file: " +
+                             std::string(std::strerror(errno)));
         close(fd);
-        svg_path = pattern;
     }
+    ~ScratchFile() { std::remove(path_.c_str()); }
+    ScratchFile(const ScratchFile&) = delete;
+    ScratchFile& operator=(const ScratchFile&) = delete;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+// SVG is written to the target through OutputFile; PNG goes through rsvg-convert in
+// the temporary directory and is then copied, so that the target too is
+// only ever replaced whole.
+void write_picture(const SceneRenderer& renderer, const RenderArgs& args) {
+    OutputFile out(args.out, {args.file, args.certificate}, "the picture");
+    const bool png = args.out.ends_with(".png") || args.out.ends_with(".PNG");
+    if (!png) {
+        renderer.write_svg(out.stream());
+        out.commit();
+        return;
+    }
+    const ScratchFile svg(".svg"), picture(".png");
     {
-        std::ofstream file(svg_path, std::ios::binary | std::ios::trunc);
-        if (!file) throw UsageError("cannot write the picture file '" + out + "'");
-        renderer.write_svg(file);
-        if (!file.flush()) throw UsageError("cannot write the picture file '" + out + "'");
+        OutputFile svg_file(svg.path(), {}, "a temporary SVG file");
+        renderer.write_svg(svg_file.stream());
+        svg_file.commit();
     }
-    if (png) {
-        struct Remove {
-            std::string path;
-            ~Remove() { std::remove(path.c_str()); }
-        } remove_svg{svg_path};
-        convert_to_png(svg_path, out);
-    }
+    convert_to_png(svg.path(), picture.path());
+    out.stream() << read_file(picture.path());
+    out.commit();
 }
 
-int run(const RenderArgs& args, const CLI::Option* steps) {
+int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* timeout) {
+    stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
     const Scene scene = load_scene(args.file, scene_format_named(args.format));
     SceneRenderer renderer(scene);
     renderer.add_caption(scene_summary(args.file, scene));
     PathEnd end;
     if (!args.certificate.empty()) {
-        std::ifstream cert(args.certificate, std::ios::binary);
-        if (!cert) read_file(args.certificate); // throws the usual FILE:1:1 message
+        const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
         std::optional<std::uint64_t> limit;
         if (steps->count() > 0) limit = args.steps;
         FirstSegments first(renderer, limit);
-        const CertificateClaim claim = read_certificate_path(scene, cert, args.certificate, first);
+        const CertificateClaim claim = read_certificate_path(scene, *cert, args.certificate, first);
         const std::string source = std::filesystem::path(args.certificate).filename().string();
         if (!claim.complete)
             renderer.add_caption("path: incomplete certificate " + source + " (no verdict)");
@@ -133,7 +156,11 @@ int run(const RenderArgs& args, const CLI::Option* steps) {
         SolveOptions options;
         options.max_steps = args.steps;
         options.path = &path;
+        // For the progress line only: stop requests end the process at once.
+        SolveMonitor progress(scene, std::nullopt, !args.quiet);
+        options.monitor = &progress;
         const Answer answer = solve(scene, options);
+        progress.erase_progress();
         if (answer.decided())
             renderer.add_caption(
                 verdict_line(answer_word(answer), answer.reason, answer.reflections));
@@ -143,7 +170,7 @@ int run(const RenderArgs& args, const CLI::Option* steps) {
         end = {answer.reason, path.last_direction()};
     }
     renderer.finish(end);
-    write_picture(renderer, args.out);
+    write_picture(renderer, args);
     std::cout << "wrote " << args.out << " (" << renderer.segments() << " segments"
               << (renderer.thinned() ? ", thinned" : "") << ")\n";
     return yes;
@@ -161,7 +188,8 @@ Command add_render(CLI::App& app) {
                   "  orthoray render instances/2d/box-corner-3x5.scene -o box.svg\n"
                   "  orthoray solve maze.scene --certificate maze.cert\n"
                   "  orthoray render maze.scene --certificate maze.cert -o maze.png\n\n"
-                  "Exit status: 0 written, 2 bad input or usage (docs/render.md).");
+                  "Exit status: 0 written, 2 bad input or usage (docs/render.md), 3 stopped\n"
+                  "by --timeout, SIGINT or SIGTERM (nothing written), 5 a failed write.");
     cmd->add_option("FILE", args->file, "the scene (.scene text or JSON)")->required();
     cmd->add_option("-o,--output", args->out,
                     "the picture to write: NAME.svg, or NAME.png (default: FILE's name with "
@@ -174,10 +202,13 @@ Command add_render(CLI::App& app) {
                         "reflections (default 1000)")
             ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000'000}));
     add_scene_format_option(cmd, args->format);
-    return [args, steps] {
+    CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the drawing");
+    cmd->add_flag("--quiet", args->quiet,
+                  "no progress line (it is shown on long runs only when stderr is a terminal)");
+    return [args, steps, timeout] {
         if (args->out.empty())
             args->out = std::filesystem::path(args->file).stem().string() + ".svg";
-        return run(*args, steps);
+        return run(*args, steps, timeout);
     };
 }
 

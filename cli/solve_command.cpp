@@ -1,8 +1,10 @@
 // orthoray solve FILE: decide an instance and print the answer.
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "output_file.hpp"
 #include "run_monitor.hpp"
 #include "scene_format_option.hpp"
 
@@ -10,7 +12,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -115,16 +116,20 @@ void print_text(const Answer& a, const char* engine, double seconds) {
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
-// What the run reports when memory ran out before an engine could say how
-// far it got (while reading or scaling the scene): no engine ran.
-Answer out_of_memory() {
+// What the run reports when it stopped before an engine could say how far
+// it got (memory ran out or a signal came while reading the scene): no
+// engine ran, no reflections, and no arithmetic chosen yet.
+Answer stopped_before_solving(Limit limit) {
     Answer answer;
-    answer.limit = Limit::memory;
+    answer.limit = limit;
     return answer;
 }
 
-int run(const SolveArgs& args, const CLI::Option* max_steps) {
+int run(const SolveArgs& args, const CLI::Option* max_steps, const CLI::Option* certificate) {
     const auto begin_command = std::chrono::steady_clock::now();
+    if (certificate->count() > 0 && args.engine == "graph")
+        throw UsageError("found --engine graph with --certificate, expected another engine "
+                         "(the graph engine writes no certificate)");
     if (args.max_memory > 0) limit_memory(args.max_memory);
     // From here on SIGINT and SIGTERM end the run with the usual output.
     const InterruptGuard interrupts;
@@ -142,7 +147,9 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
             load_scene(args.file,
                        scene_format_named(args.format)); // bad input ends here, before any output
     } catch (const std::bad_alloc&) {
-        return report(out_of_memory(), 0);
+        return report(stopped_before_solving(Limit::memory), 0);
+    } catch (const ReadInterrupted&) {
+        return report(stopped_before_solving(Limit::interrupt), 0);
     }
     SolveOptions options;
     options.engine = engines.at(args.engine);
@@ -157,13 +164,11 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
     SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph);
     options.monitor = &monitor;
 
-    std::ofstream cert_file;
+    std::optional<OutputFile> cert_file;
     std::unique_ptr<CertificateWriter> writer;
-    if (!args.certificate.empty()) {
-        cert_file.open(args.certificate, std::ios::binary | std::ios::trunc);
-        if (!cert_file)
-            throw UsageError("cannot write the certificate file '" + args.certificate + "'");
-        writer = std::make_unique<CertificateWriter>(cert_file, scene,
+    if (certificate->count() > 0) {
+        cert_file.emplace(args.certificate, std::vector<std::string>{args.file}, "the certificate");
+        writer = std::make_unique<CertificateWriter>(cert_file->stream(), scene,
                                                      args.certificate_format == "jsonl"
                                                          ? CertificateFormat::jsonl
                                                          : CertificateFormat::text);
@@ -174,14 +179,19 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
     try {
         answer = solve(scene, options);
     } catch (const std::bad_alloc&) {
-        answer = out_of_memory();
+        answer = stopped_before_solving(Limit::memory);
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     monitor.erase_progress();
     // A limit, an interrupt included, still ends the certificate properly:
     // `partial` and `end` after the last complete point.
-    if (writer) writer->finish(answer);
+    // The certificate is renamed into place only once complete (a limit's
+    // partial certificate is complete too: it says `partial`).
+    if (writer) {
+        writer->finish(answer);
+        cert_file->commit();
+    }
     return report(answer, seconds);
 }
 
@@ -198,7 +208,8 @@ Command add_solve(CLI::App& app) {
                  "reflections; answer no: it escapes to infinity, is absorbed, or is periodic\n"
                  "(reason cycle; `period` reflections per period) without passing the target.\n"
                  "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 a limit (--max-steps,\n"
-                 "--timeout, --max-memory, SIGINT or SIGTERM) stopped the run first.");
+                 "--timeout, --max-memory, SIGINT or SIGTERM) stopped the run first, 5 the\n"
+                 "certificate or the answer could not be written (docs/limits.md).");
     cmd->add_option("FILE", args->file,
                     "the scene: .scene text (docs/scene-format.md) or JSON (docs/scene-json.md)")
         ->required();
@@ -220,19 +231,11 @@ Command add_solve(CLI::App& app) {
         cmd->add_option("--max-steps", args->max_steps,
                         "perform at most N reflections; without an answer by then, answer unknown "
                         "(reason limit) and exit 3")
-            ->check(CLI::Validator(
-                [](const std::string& text) {
-                    return text.find_first_not_of("0123456789") == std::string::npos &&
-                                   !text.empty()
-                               ? std::string()
-                               : "found '" + text + "', expected a whole number N >= 0";
-                },
-                "N >= 0"));
+            ->check(whole_number_u64());
     cmd->add_option("--timeout", args->timeout,
                     "stop after SECONDS (a decimal, counted from the start) with answer unknown "
                     "(reason limit, limit time) and exit 3")
-        // Past 10^9 seconds (31 years) the deadline would overflow the clock.
-        ->check(CLI::PositiveNumber & CLI::Range(0.0, 1e9));
+        ->check(timeout_seconds());
     cmd->add_option("--max-memory", args->max_memory,
                     "let the process grow by at most MB megabytes of address space; running out "
                     "answers unknown (reason limit, limit memory), exit 3")
@@ -263,7 +266,7 @@ Command add_solve(CLI::App& app) {
            "elements cluster), grid (uniform grid), bvh, pieces (2D piece tables from the "
            "start) or section (cross-section grid)")
         ->check(CLI::IsMember(names(shooters)));
-    return [args, max_steps] { return run(*args, max_steps); };
+    return [args, max_steps, certificate] { return run(*args, max_steps, certificate); };
 }
 
 } // namespace orthoray::cli

@@ -4,7 +4,6 @@
 #include "orthoray/parse.hpp"
 #include "scene_format_option.hpp"
 
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -17,9 +16,8 @@ struct VerifyArgs {
 
 int run(const VerifyArgs& args) {
     const Scene scene = load_scene(args.file, scene_format_named(args.format));
-    std::ifstream cert(args.certificate, std::ios::binary);
-    if (!cert) read_file(args.certificate); // throws the usual FILE:1:1 message
-    const Verdict verdict = verify_certificate(scene, cert, args.certificate);
+    const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
+    const Verdict verdict = verify_certificate(scene, *cert, args.certificate);
     std::cout << verdict.message << '\n';
     return verdict.valid ? yes : no;
 }

@@ -111,11 +111,21 @@ pid_t start_solve(const std::string& scene, const std::string& cert, const std::
 
 // The child is stepping: its certificate holds more than a buffer's worth
 // of points (the file stays empty until the stream's first flush).
+// The certificate is written to a temporary file beside it (".NAME.partial-
+// XXXXXX", docs/limits.md) and renamed into place at the end, so the child
+// is stepping once either has content.
 bool stepping(const std::string& cert) {
+    const fs::path path(cert);
+    const std::string partial = "." + path.filename().string() + ".partial";
     return wait_until([&] {
         std::error_code ignored;
-        const auto size = fs::file_size(cert, ignored);
-        return !ignored && size > 0;
+        for (const auto& entry : fs::directory_iterator(path.parent_path(), ignored)) {
+            const std::string name = entry.path().filename().string();
+            if ((entry.path() == path || name.starts_with(partial)) &&
+                fs::file_size(entry.path(), ignored) > 0 && !ignored)
+                return true;
+        }
+        return false;
     });
 }
 

@@ -4,6 +4,9 @@
 
 #include "orthoray/scene.hpp"
 
+#include <cstddef>
+#include <istream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -32,8 +35,30 @@ Scene read_scene(std::string_view text, const std::string& file = "<input>");
 // of error messages; malformed JSON is reported at its line and column too.
 Scene read_scene_json(std::string_view text, const std::string& file = "<input>");
 
-// Reads a whole file (throws InputError when it cannot be opened).
+// The most orthoray reads into memory at once: a whole scene file, or one
+// line of a certificate (certificates are streamed a line at a time, so only
+// their lines are capped). 256 MiB holds a scene of some ten million
+// mirrors and a certificate line with coordinates of 10^8 digits, far past
+// what the engines can use, while /dev/zero or an endless pipe given by
+// mistake ends within a second (docs/limits.md).
+constexpr std::size_t input_cap_bytes = std::size_t{256} << 20;
+
+// A signal handler ran while a file was opened or read (a FIFO waiting for
+// its writer, a slow pipe): the command stops as interrupted, not as bad
+// input.
+class ReadInterrupted : public std::runtime_error {
+public:
+    explicit ReadInterrupted(const std::string& path);
+};
+
+// Reads a whole file, at most input_cap_bytes. Throws InputError for a
+// missing or unreadable file, a directory or a larger input.
 std::string read_file(const std::string& path);
+
+// Opens a file to stream (a certificate), with read_file's checks; a read
+// error later throws InputError from the stream instead of looking like the
+// end of the file.
+std::unique_ptr<std::istream> open_file_stream(const std::string& path);
 
 enum class SceneFormat {
     automatic, // by the file name: JSON when it ends in .json, .scene text otherwise

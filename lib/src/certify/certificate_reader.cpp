@@ -44,8 +44,29 @@ constexpr std::string_view json_keywords[] = {"orthoray-certificate",
 CertificateReader::CertificateReader(std::istream& in, const std::string& name)
     : in_(in), name_(name) {}
 
+// Like std::getline, but a line longer than input_cap_bytes is bad input:
+// the file is streamed so that memory does not grow with it, and one endless
+// line (/dev/zero) must not undo that.
 bool CertificateReader::read_line() {
-    if (!std::getline(in_, line_)) return false;
+    line_.clear();
+    char chunk[1 << 12];
+    bool any = false;
+    while (true) {
+        in_.getline(chunk, sizeof chunk);
+        const std::size_t n = static_cast<std::size_t>(in_.gcount());
+        any = any || n > 0;
+        const bool full = in_.fail() && !in_.eof() && n == sizeof chunk - 1;
+        line_.append(chunk, full ? n : n - (in_.good() && n > 0 ? 1 : 0));
+        if (line_.size() > input_cap_bytes)
+            throw InputError(name_, clamp_int(line_number_ + 1),
+                             clamp_int(static_cast<long long>(input_cap_bytes) + 1),
+                             "found more than " + std::to_string(input_cap_bytes >> 20) +
+                                 " MiB in one line, expected lines of at most that size "
+                                 "(docs/limits.md)");
+        if (!full) break;
+        in_.clear(); // the chunk filled up: the line goes on
+    }
+    if (!any && !in_.good()) return false;
     ++line_number_;
     if (!line_.empty() && line_.back() == '\r') line_.pop_back(); // CRLF
     return true;

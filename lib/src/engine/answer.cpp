@@ -55,7 +55,7 @@ const char* to_string(EngineUsed engine) {
 const char* to_string(ArithmeticUsed arithmetic) {
     switch (arithmetic) {
     case ArithmeticUsed::none:
-        return "";
+        return "none";
     case ArithmeticUsed::int64:
         return "int64";
     case ArithmeticUsed::int128:

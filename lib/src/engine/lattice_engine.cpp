@@ -36,6 +36,17 @@ using lattice::LatticeScene;
 std::uint64_t grid_phase(std::size_t elements) {
     return std::max<std::uint64_t>(std::uint64_t{1} << 14, 64 * std::uint64_t{elements});
 }
+
+// The reflections that cost about as much as `reflections` on integers of
+// at most 128 bits. On GMP integers a reflection copies, adds and compares
+// numbers of the coordinates' size, so its cost grows with their bits (about
+// 3 ms a reflection at 10^6 digits, where a 64-bit one takes 20 ns): the
+// phases counted in reflections shrink in proportion, to at least 16.
+std::uint64_t at_step_cost(std::uint64_t reflections, const Integer& magnitude) {
+    const std::uint64_t bits = mpz_sizeinbase(magnitude.get_mpz_t(), 2);
+    if (bits <= 128) return reflections;
+    return std::max<std::uint64_t>(16, reflections / (bits / 128));
+}
 constexpr std::uint32_t no_mirror = ~std::uint32_t{0};
 
 // Reflections on the piece tables worth at most about one induction on
@@ -43,8 +54,13 @@ constexpr std::uint32_t no_mirror = ~std::uint32_t{0};
 // about the coordinates' bits) of some 250 ns; a table step takes 20 ns on
 // int64 and up to 60 ns on wider integers (bench/RESULTS.md), so
 // 2 k log2 N reflections cost a quarter to half an induction.
+// Past 128 bits that estimate fails: the induction's division steps cover
+// many reflections each, so it takes far fewer than log2 N steps (a box with
+// 10^6-digit sides: 28 steps, where log2 N is 3.3 million). The budget stops
+// growing there, and at_step_cost scales it to the cost of a step.
 std::uint64_t induction_budget(std::size_t pieces, const Integer& magnitude) {
-    const std::uint64_t bits = mpz_sizeinbase(magnitude.get_mpz_t(), 2) + 8;
+    const std::uint64_t bits =
+        std::min<std::uint64_t>(mpz_sizeinbase(magnitude.get_mpz_t(), 2) + 8, 136);
     return 2 * std::uint64_t{pieces} * bits;
 }
 
@@ -144,6 +160,16 @@ public:
         finish(Reason::limit);
     }
 
+    // Between setup phases (scaling, a shooter, the tables), each of which
+    // can take a while on huge numbers: true, with the run ended, when the
+    // monitor asks to stop.
+    bool stopped_by_monitor() {
+        if (!options_.monitor) return false;
+        const std::optional<Limit> limit = options_.monitor->poll(reflections_);
+        if (limit) stop(*limit);
+        return limit.has_value();
+    }
+
     std::uint64_t reflections() const { return reflections_; }
     const Int (&target() const)[M] { return target_; }
     Answer& answer() { return answer_; }
@@ -229,6 +255,7 @@ Answer build_and_finish(Run<Int, M, Detector>& run, ShooterUsed name, Make&& mak
     const auto begin = std::chrono::steady_clock::now();
     const auto shooter = make();
     run.answer().stats.setup.seconds += seconds_since(begin);
+    if (run.stopped_by_monitor()) return run.answer();
     return finish_with(run, name, shooter);
 }
 
@@ -251,6 +278,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
     run.answer().shooter = ShooterUsed::grid;
+    if (run.stopped_by_monitor()) return run.answer();
     // The induction engine stands on the tables and starts from state 1.
     const bool induce =
         ls.scene->dim == 2 &&
@@ -262,7 +290,9 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     if (tables) {
         // Reflections on the grid first: the grid phase, or none when the
         // tables are asked for at once; the induction needs state 1 taken.
-        std::uint64_t first = options.shooter == Shooter::pieces ? 0 : grid_phase(grid.size());
+        std::uint64_t first = options.shooter == Shooter::pieces
+                                  ? 0
+                                  : at_step_cost(grid_phase(grid.size()), ls.magnitude);
         if (induce && (options.engine == Engine::induction || first == 0)) first = 1;
         auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
             return grid.shoot(s.p, s.negative);
@@ -279,6 +309,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                                                        : 64 * grid.size() + 1024);
         if (table && ls.target_reachable) table->mark_target(grid, run.target());
         setup.seconds += seconds_since(begin);
+        if (run.stopped_by_monitor()) return run.answer();
         if (table) {
             setup.pieces = table->size();
             run.answer().shooter = ShooterUsed::pieces;
@@ -299,9 +330,10 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                 // faster engine's time.
                 // A certificate's path prefix is checked point by point, so
                 // with one the induction starts right away.
-                const std::uint64_t budget = options.engine == Engine::induction || options.path
-                                                 ? 0
-                                                 : induction_budget(table->size(), ls.magnitude);
+                const std::uint64_t budget =
+                    options.engine == Engine::induction || options.path
+                        ? 0
+                        : at_step_cost(induction_budget(table->size(), ls.magnitude), ls.magnitude);
                 if (run.advance_in_chunks(by_table, run.reflections() + budget))
                     return run.answer();
                 induction::Decision decision =
@@ -362,6 +394,7 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
 template <class Int, int M, class Detector>
 Answer run(const LatticeScene& ls, const SolveOptions& options) {
     Run<Int, M, Detector> run(ls, options);
+    if (run.stopped_by_monitor()) return run.answer(); // the scaling took long
     try {
         if constexpr (M == 2)
             return run_planar(run, ls, options);

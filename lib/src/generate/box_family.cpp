@@ -93,6 +93,14 @@ GeneratedScene generate_box(const BoxFamily& f) {
         scene.target() = f.target_point;
         break;
     }
+    if (!from_corner && f.target == BoxFamily::Target::reached) {
+        // The closed form is for the 45-degree ray from the corner 0; this
+        // ray may reach that corner or none (run solve to know).
+        out.notes.push_back("box; target: the corner the 45-degree ray from the corner 0 "
+                            "reaches; this ray starts or moves otherwise, so it is not known to "
+                            "reach it");
+        return out;
+    }
     out.notes.push_back(std::string("box; target: ") + target_name(f.target));
     if (!from_corner || f.target == BoxFamily::Target::point) return out;
 

@@ -23,6 +23,7 @@ Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int
         decision.limit = options.monitor->poll(reflections);
         return decision.limit.has_value();
     };
+    if (stop(0)) return decision; // building it takes a while on huge numbers
     const std::optional<InducedOrbit> orbit = induce(exchange, nullptr, stop);
     if (!orbit) return decision;
 

@@ -6,10 +6,7 @@
 
 #include "io/quoted_token.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <vector>
 
@@ -274,29 +271,6 @@ private:
 
 Scene read_scene(std::string_view text, const std::string& file) {
     return SceneReader(text, file).read();
-}
-
-std::string read_file(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(path, 1, 1, "found a directory, expected a readable file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(path, 1, 1,
-                         std::string("found no readable file (") + std::strerror(errno) +
-                             "), expected a readable file");
-    // Read in chunks with a cap, so that a device or an endless pipe given by
-    // mistake ends with a message instead of a hang or exhausted memory.
-    constexpr std::size_t cap = std::size_t{256} << 20;
-    std::string content;
-    char buffer[1 << 16];
-    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-        content.append(buffer, static_cast<std::size_t>(in.gcount()));
-        if (content.size() > cap)
-            throw InputError(path, 1, 1,
-                             "found more than 256 MiB, expected a scene or certificate file");
-    }
-    return content;
 }
 
 SceneFormat resolve_scene_format(const std::string& path, SceneFormat requested) {

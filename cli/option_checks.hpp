@@ -1,0 +1,48 @@
+// Checks for numeric options, so that every command rejects the same
+// out-of-range values with the same one-line message (exit 2) instead of
+// CLI11 clamping or wrapping them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+namespace orthoray::cli {
+
+// A whole number from 0 to 2^64 - 1, in plain decimal digits.
+inline CLI::Validator whole_number_u64() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            const std::string max = "18446744073709551615";
+            const std::size_t first = text.find_first_not_of('0');
+            const std::string digits = first == std::string::npos ? "0" : text.substr(first);
+            const bool plain =
+                !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+            if (plain &&
+                (digits.size() < max.size() || (digits.size() == max.size() && digits <= max)))
+                return {};
+            return "found '" + text + "', expected a whole number from 0 to " + max;
+        },
+        "0..2^64-1");
+}
+
+// Seconds for --timeout: a finite decimal above 0 and at most 10^9 (31
+// years; beyond, the deadline would overflow the clock). 0 is refused rather
+// than read as "no timeout" or "stop at once": leaving the option out means
+// no timeout.
+inline CLI::Validator timeout_seconds() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            const bool parsed = !text.empty() && end == text.c_str() + text.size();
+            if (parsed && std::isfinite(value) && value > 0 && value <= 1e9) return {};
+            return "found '" + text + "', expected a number of seconds above 0 and at most 10^9";
+        },
+        "SECONDS");
+}
+
+} // namespace orthoray::cli

@@ -1,0 +1,196 @@
+#include "output_file.hpp"
+
+#include "commands.hpp"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <iostream>
+#include <streambuf>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace orthoray::cli {
+namespace {
+
+std::string reason(int error) {
+    return std::strerror(error);
+}
+
+// The temporary files being written, for remove_unfinished_output(): plain
+// arrays, since a signal handler may read them at any moment. A command
+// writes at most two outputs at once (render's PNG: an SVG and the PNG).
+constexpr int max_unfinished = 4;
+char unfinished_path[max_unfinished][4096];
+volatile std::sig_atomic_t unfinished_used[max_unfinished];
+
+int remember_unfinished(const std::string& path) {
+    for (int i = 0; i < max_unfinished; ++i)
+        if (!unfinished_used[i] && path.size() < sizeof unfinished_path[i]) {
+            std::memcpy(unfinished_path[i], path.c_str(), path.size() + 1);
+            unfinished_used[i] = 1;
+            return i;
+        }
+    return -1;
+}
+
+void forget_unfinished(int slot) {
+    if (slot >= 0) unfinished_used[slot] = 0;
+}
+
+bool same_file(const struct stat& a, const struct stat& b) {
+    return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+} // namespace
+
+// Buffers writes to a file descriptor; a failed write(2) throws WriteError,
+// which the stream rethrows (badbit), so the caller stops at the first one.
+class OutputFile::Buffer final : public std::streambuf {
+public:
+    Buffer(int fd, std::string description) : fd_(fd), description_(std::move(description)) {
+        setp(buffer_, buffer_ + sizeof buffer_);
+    }
+    ~Buffer() override {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+
+    // Writes what is buffered, syncs a regular file and closes the descriptor.
+    void close(bool regular) {
+        drain();
+        // fsync makes the rename below publish bytes that are on the disk.
+        if (regular && ::fsync(fd_) != 0) fail(errno);
+        const int fd = fd_;
+        fd_ = -1;
+        if (::close(fd) != 0) fail(errno);
+    }
+
+protected:
+    int_type overflow(int_type c) override {
+        drain();
+        if (!traits_type::eq_int_type(c, traits_type::eof())) {
+            *pptr() = traits_type::to_char_type(c);
+            pbump(1);
+        }
+        return traits_type::not_eof(c);
+    }
+    int sync() override {
+        drain();
+        return 0;
+    }
+
+private:
+    int fd_;
+    std::string description_;
+    char buffer_[1 << 16];
+
+    [[noreturn]] void fail(int error) const {
+        throw WriteError("cannot write " + description_ + ": " + reason(error));
+    }
+
+    void drain() {
+        const char* p = pbase();
+        while (p < pptr()) {
+            const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0) fail(errno);
+            p += n;
+        }
+        setp(buffer_, buffer_ + sizeof buffer_);
+    }
+};
+
+OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& inputs,
+                       const std::string& what)
+    : path_(path), what_(what + " '" + path + "'") {
+    if (path.empty())
+        throw UsageError("found an empty file name for " + what + ", expected a file name");
+    struct stat target {};
+    const bool exists = ::stat(path.c_str(), &target) == 0;
+    if (exists) {
+        for (const std::string& input : inputs) {
+            struct stat in {};
+            if (::stat(input.c_str(), &in) == 0 && same_file(in, target))
+                throw UsageError("found " + what_ + " naming the input '" + input +
+                                 "', expected another file (it would be overwritten)");
+        }
+        if (S_ISDIR(target.st_mode))
+            throw UsageError("found a directory for " + what_ + ", expected a file name");
+    }
+    int fd = -1;
+    if (exists && !S_ISREG(target.st_mode)) {
+        fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd < 0) cannot_create(errno);
+    } else {
+        // The temporary file sits beside the target, so the rename stays on
+        // one file system and is atomic; its name says what it is, should a
+        // killed run leave it behind.
+        const std::filesystem::path target_path(path);
+        std::string pattern = (target_path.parent_path() /
+                               ("." + target_path.filename().string() + ".partial-XXXXXX"))
+                                  .string();
+        fd = ::mkstemp(pattern.data());
+        if (fd < 0) cannot_create(errno);
+        temporary_ = pattern;
+        slot_ = remember_unfinished(temporary_);
+        // mkstemp makes the file private; give it the mode a plain create
+        // would (or the mode of the file it replaces).
+        mode_t mode = 0666;
+        if (exists) {
+            mode = target.st_mode & 07777;
+        } else {
+            const mode_t mask = ::umask(0);
+            ::umask(mask);
+            mode &= ~mask;
+        }
+        ::fchmod(fd, mode);
+    }
+    buffer_ = std::make_unique<Buffer>(fd, what_);
+    stream_ = std::make_unique<std::ostream>(buffer_.get());
+    stream_->exceptions(std::ios::badbit);
+}
+
+OutputFile::~OutputFile() {
+    forget_unfinished(slot_);
+    if (!committed_ && !temporary_.empty()) ::unlink(temporary_.c_str());
+}
+
+// A path that cannot be opened or created (no such directory, no
+// permission) is a mistake on the command line, found before any work:
+// exit 2, as for a bad option. Failures while writing are WriteError.
+void OutputFile::cannot_create(int error) const {
+    throw UsageError("cannot write " + what_ + ": " + reason(error));
+}
+
+std::ostream& OutputFile::stream() {
+    return *stream_;
+}
+
+void OutputFile::commit() {
+    buffer_->close(!temporary_.empty());
+    if (!temporary_.empty() && ::rename(temporary_.c_str(), path_.c_str()) != 0)
+        throw WriteError("cannot write " + what_ + ": " + reason(errno));
+    forget_unfinished(slot_);
+    committed_ = true;
+}
+
+void remove_unfinished_output() noexcept {
+    for (int i = 0; i < max_unfinished; ++i)
+        if (unfinished_used[i]) ::unlink(unfinished_path[i]);
+}
+
+void finish_standard_output() {
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0;
+    const int error = errno;
+    if (flushed && !std::ferror(stdout) && std::cout.good()) return;
+    throw WriteError(std::string("cannot write to standard output: ") +
+                     (error ? reason(error) : "a write failed"));
+}
+
+} // namespace orthoray::cli

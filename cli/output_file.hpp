@@ -1,0 +1,57 @@
+// Every file the command line writes goes through OutputFile: the bytes go
+// to a temporary file beside the target, every write and the close are
+// checked, and only a complete file is renamed over the target, so a reader
+// never sees a torn file, whatever kills the process (docs/limits.md).
+#pragma once
+
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace orthoray::cli {
+
+// A write that failed (a full disk, a file size limit, a broken pipe):
+// reported as `orthoray: cannot write ...: REASON`, exit status 5.
+struct WriteError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+class OutputFile {
+public:
+    // Refuses (UsageError) an empty path and a path that names the same
+    // file as one of `inputs`. A target that exists and is not a regular
+    // file (/dev/null, /dev/full, a FIFO) is written in place: it cannot be
+    // replaced by a rename, and a reader of a device sees what arrives.
+    OutputFile(const std::string& path, const std::vector<std::string>& inputs,
+               const std::string& what);
+    // Removes the temporary file unless commit() ran.
+    ~OutputFile();
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+
+    // Throws WriteError from the write that failed.
+    std::ostream& stream();
+    // Flushes, syncs and closes the file, then renames it over the target.
+    void commit();
+
+private:
+    class Buffer;
+    [[noreturn]] void cannot_create(int error) const;
+    std::string path_, temporary_, what_;
+    std::unique_ptr<Buffer> buffer_;
+    std::unique_ptr<std::ostream> stream_;
+    int slot_ = -1; // in the table remove_unfinished_output() reads
+    bool committed_ = false;
+};
+
+// Removes the temporary files of the outputs not yet committed. Safe to call
+// from a signal handler (it only calls unlink).
+void remove_unfinished_output() noexcept;
+
+// Flushes standard output and throws WriteError if any write to it failed
+// (a closed pipe, /dev/full): run once, after a command.
+void finish_standard_output();
+
+} // namespace orthoray::cli

@@ -1,0 +1,23 @@
+// For the commands that write their output only at the end (render, bounds,
+// convert): SIGINT, SIGTERM and --timeout end the process at once, from the
+// signal handler, with one line on stderr and exit status 3. Nothing is
+// lost: there was nothing to report yet, and an output being written is a
+// temporary file that the handler removes (OutputFile), so the target is
+// untouched. `solve` instead polls (run_monitor.hpp), since a stopped solve
+// still reports how far it got.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+
+namespace orthoray::cli {
+
+// Adds --timeout SECONDS to a command, the same option as solve's.
+CLI::Option* add_timeout_option(CLI::App* cmd, double& seconds, const std::string& what);
+
+// Installs the handlers, and with a timeout an interval timer, for the rest
+// of the process.
+void stop_at_once(std::optional<double> timeout_seconds);
+
+} // namespace orthoray::cli

@@ -1,0 +1,62 @@
+// Numeric options reject what they cannot mean with one message and exit 2,
+// instead of clamping, wrapping or reading nan as "no limit".
+#include "support/run_cli.hpp"
+#include "support/test_files.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace orthoray::test;
+
+namespace {
+
+const std::string box = instance("2d/box-corner-3x5.scene");
+
+void require_rejected(const std::string& args, const std::string& expected) {
+    CAPTURE(args);
+    const CliResult r = run_cli(args);
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find(expected) != std::string::npos);
+}
+
+} // namespace
+
+TEST_CASE("the option --timeout takes only a finite number of seconds above 0",
+          "[option_ranges][cli]") {
+    for (const std::string& command :
+         std::vector<std::string>{"solve " + quote(box), "render " + quote(box) + " -o x.svg",
+                                  "bounds " + quote(box), "convert " + quote(box) + " x.json"})
+        for (const std::string value :
+             {"nan", "NaN", "inf", "-inf", "-1", "0", "0.0", "1e300", "1e-400", "x", "''"})
+            require_rejected(command + " --timeout " + value,
+                             "expected a number of seconds above 0 and at most 10^9");
+    CHECK(run_cli("solve " + quote(box) + " --timeout 1e9").status == 0);
+    CHECK(run_cli("solve " + quote(box) + " --timeout 0.5").status == 0);
+}
+
+TEST_CASE("the options --max-steps and --seed take whole numbers up to 2^64 - 1",
+          "[option_ranges][cli]") {
+    for (const char* value : {"18446744073709551616", "99999999999999999999", "-1", "1e3",
+                              "100000000000000000000000", "0x10", "+5", "''"}) {
+        require_rejected("solve " + quote(box) + " --max-steps " + value,
+                         "expected a whole number from 0 to 18446744073709551615");
+        require_rejected(std::string("generate random --seed ") + value,
+                         "expected a whole number from 0 to 18446744073709551615");
+    }
+    const CliResult top = run_cli("generate random --seed 18446744073709551615");
+    CHECK(top.status == 0);
+    CHECK(top.out.find("--seed 18446744073709551615") != std::string::npos);
+    // The header records the seed as given and the scene is the one of that
+    // seed, so leading zeros change nothing but the header.
+    const CliResult padded = run_cli("generate random --seed 007");
+    const CliResult plain = run_cli("generate random --seed 7");
+    REQUIRE(padded.status == 0);
+    CHECK(padded.out.substr(padded.out.find("\ndim")) == plain.out.substr(plain.out.find("\ndim")));
+    CHECK(run_cli("solve " + quote(box) + " --max-steps 18446744073709551615").status == 0);
+}

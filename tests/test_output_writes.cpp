@@ -1,0 +1,175 @@
+// Every write is checked (docs/limits.md): a full device, a file size limit
+// or a closed pipe is reported with exit status 5, outputs appear only
+// complete (temporary file, then rename), and an output that would
+// overwrite an input or has no name is refused (exit 2).
+#include "support/run_cli.hpp"
+#include "support/spawn_cli.hpp"
+#include "support/test_files.hpp"
+
+#include "orthoray/generate.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace orthoray;
+using namespace orthoray::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string box = instance("2d/box-corner-3x5.scene");
+
+// A scene whose ray runs for hours: about 3 * 4^40 reflections.
+std::string long_scene(const TempDir& dir) {
+    return dir.write("long.scene",
+                     write_generated(generate_coprime_cuboid(40, BoxFamily::Target::far)));
+}
+
+// The files in `dir` other than `keep`.
+std::vector<std::string> leftovers(const std::string& dir, const std::vector<std::string>& keep) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (std::find(keep.begin(), keep.end(), name) == keep.end()) names.push_back(name);
+    }
+    return names;
+}
+
+} // namespace
+
+TEST_CASE("a write to /dev/full is reported, exit 5", "[output_writes][cli]") {
+    const auto solve = run_cli("solve " + quote(box) + " --certificate /dev/full");
+    CHECK(solve.status == 5);
+    CHECK(solve.err == "orthoray: cannot write the certificate '/dev/full': No space left on "
+                       "device\n");
+    const auto generate = run_cli("generate box --sides 3 5 -o /dev/full");
+    CHECK(generate.status == 5);
+    CHECK(generate.err.find("cannot write the scene '/dev/full'") != std::string::npos);
+    const auto convert = run_cli("convert " + quote(box) + " /dev/full --to json");
+    CHECK(convert.status == 5);
+    const auto render = run_cli("render " + quote(box) + " -o /dev/full");
+    CHECK(render.status == 5);
+}
+
+TEST_CASE("standard output on /dev/full or a closed pipe is a failed write, exit 5",
+          "[output_writes][cli]") {
+    for (const std::string& command : std::vector<std::string>{
+             "solve \"" + box + "\"", "verify \"" + box + "\" /dev/null", "pieces \"" + box + "\"",
+             "bounds \"" + box + "\"", "generate random --mirrors 20"}) {
+        CAPTURE(command);
+        const ShellResult full = run_shell("$ORTHORAY " + command + " >/dev/full");
+        CHECK(full.status == 5);
+        CHECK(full.err.find("cannot write to standard output") != std::string::npos);
+    }
+    // A reader that stops early: without SIGPIPE ignored the writer would die
+    // of it (status 141) instead of saying so.
+    const ShellResult pipe = run_shell(
+        "$ORTHORAY generate random --mirrors 200000 | head -c 1 >/dev/null; exit ${PIPESTATUS[0]}");
+    CHECK(pipe.status == 5);
+    CHECK(pipe.err.rfind("orthoray: cannot write to standard output: ", 0) == 0);
+}
+
+TEST_CASE("ulimit -f: the certificate is not left cut, exit 5", "[output_writes][cli]") {
+    const TempDir dir;
+    const std::string scene = long_scene(dir);
+    const std::string cert = dir.path("c.cert");
+    // 8 blocks of 512 bytes; the certificate of 10^5 reflections is larger.
+    const ShellResult r = run_shell("ulimit -f 8; $ORTHORAY solve \"" + scene +
+                                    "\" --max-steps 100000 --certificate \"" + cert + "\"");
+    CHECK(r.status == 5);
+    CHECK(r.err.find("cannot write the certificate") != std::string::npos);
+    CHECK(r.err.find("File too large") != std::string::npos);
+    CHECK_FALSE(fs::exists(cert));
+    CHECK(leftovers(dir.path(""), {"long.scene"}).empty());
+}
+
+TEST_CASE("an output is refused when it has no name or names an input", "[output_writes][cli]") {
+    const TempDir dir;
+    const std::string scene = dir.write("box.scene", slurp(box));
+    const auto empty = run_cli("solve " + quote(scene) + " --certificate ''");
+    CHECK(empty.status == 2);
+    CHECK(empty.out.empty());
+    CHECK(empty.err.find("found an empty file name for the certificate") != std::string::npos);
+    for (const std::string& same : {scene, dir.path("./box.scene")}) {
+        const auto r = run_cli("solve " + quote(scene) + " --certificate " + quote(same));
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err.find("naming the input") != std::string::npos);
+    }
+    fs::create_hard_link(scene, dir.path("link.scene"));
+    CHECK(run_cli("convert " + quote(scene) + " " + quote(dir.path("link.scene"))).status == 2);
+    CHECK(run_cli("render " + quote(scene) + " -o " + quote(scene)).status == 2);
+    CHECK(slurp(scene) == slurp(box)); // untouched
+    CHECK(run_cli("generate box -o ''").status == 2);
+}
+
+TEST_CASE("solve with --engine graph and --certificate is a usage error, and writes nothing",
+          "[output_writes][cli]") {
+    const TempDir dir;
+    const auto r =
+        run_cli("solve " + quote(box) + " --engine graph --certificate " + quote(dir.path("g")));
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("--engine graph") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.path("g")));
+}
+
+TEST_CASE("kill -9 while a certificate is written leaves no file verify could take as complete",
+          "[output_writes][cli]") {
+    const TempDir dir;
+    const std::string scene = long_scene(dir);
+    const std::string cert = dir.path("c.cert");
+    for (const int milliseconds : {5, 50, 300}) {
+        CAPTURE(milliseconds);
+        const pid_t child =
+            spawn_cli({"solve", scene, "--certificate", cert}, dir.path("out"), dir.path("err"));
+        REQUIRE(child > 0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
+        REQUIRE(kill(child, SIGKILL) == 0);
+        CHECK(wait_for(child) == -SIGKILL);
+        // Only the temporary file may remain, under a name of its own.
+        CHECK_FALSE(fs::exists(cert));
+        for (const std::string& name : leftovers(dir.path(""), {"long.scene", "out", "err"})) {
+            CHECK(name.rfind(".c.cert.partial-", 0) == 0);
+            fs::remove(dir.path(name));
+        }
+    }
+    // A run stopped by a limit still leaves its partial certificate.
+    const auto limited =
+        run_cli("solve " + quote(scene) + " --max-steps 1000 --certificate " + quote(cert));
+    CHECK(limited.status == 3);
+    const auto verdict = run_cli("verify " + quote(scene) + " " + quote(cert));
+    CHECK(verdict.status == 1);
+    CHECK(verdict.out.find("partial certificate: 1000 reflections") != std::string::npos);
+}
+
+TEST_CASE("a full file system: the write error is reported and the old file kept",
+          "[output_writes][cli]") {
+    // A 64 KiB tmpfs, where mounting is allowed (root in a container);
+    // elsewhere /dev/full and ulimit -f above cover the same paths.
+    const TempDir dir;
+    const std::string mount = dir.path("small");
+    fs::create_directory(mount);
+    if (run_shell("mount -t tmpfs -o size=64k tmpfs \"" + mount + "\"").status != 0) {
+        WARN("cannot mount a small tmpfs here; skipped");
+        return;
+    }
+    const std::string scene = long_scene(dir);
+    const std::string cert = mount + "/c.cert";
+    std::ofstream(cert) << "old\n";
+    const auto r =
+        run_cli("solve " + quote(scene) + " --max-steps 100000 --certificate " + quote(cert));
+    CHECK(r.status == 5);
+    CHECK(r.err.find("No space left on device") != std::string::npos);
+    CHECK(slurp(cert) == "old\n");
+    CHECK(leftovers(mount, {"c.cert"}).empty());
+    run_shell("umount \"" + mount + "\"");
+}
