@@ -23,6 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const orthoray::InputError&) {
         return 0;
     }
+    // The engines cross-checked here decide single trajectories among
+    // two-sided elements; the optics engines have their own checks.
+    if (!scene.single_trajectory() || scene.has_one_sided()) return 0;
     orthoray::SolveOptions options;
     options.max_steps = 300;
     std::ostringstream certificate;
