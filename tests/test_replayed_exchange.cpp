@@ -68,7 +68,7 @@ std::vector<check::PieceSpec> specs_of(const IntervalExchange& e) {
         s.hit = p.hit;
         s.kind = p.kind == PieceKind::escape     ? check::Kind::escape
                  : p.kind == PieceKind::absorbed ? check::Kind::absorbed
-                                                            : check::Kind::reflect;
+                                                 : check::Kind::reflect;
         specs.push_back(s);
     }
     return specs;
