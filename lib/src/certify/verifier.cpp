@@ -193,6 +193,9 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
     }
     case Reason::limit:
         break;
+    case Reason::lit:   // read_reason never yields these: no certificate
+    case Reason::unlit: // format covers the illumination question yet
+        return bad(std::string("reason ") + reason + " has no certificate format");
     }
     if (claim.reflections != expected)
         return bad("reflections " + claim.reflections.get_str() + ", but " +
@@ -278,6 +281,9 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
         case Reason::limit:
             in.advance();
             in.expect("partial", 0, in.end_of_statement());
+            break;
+        case Reason::lit: // read_reason never yields these
+        case Reason::unlit:
             break;
         }
         in.advance();

@@ -1,6 +1,7 @@
 // solve(): picks the engine the options ask for.
 #include "orthoray/solve.hpp"
 
+#include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_tracer.hpp"
 #include "orthoray/state_graph.hpp"
@@ -45,12 +46,16 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // The illumination engine (several rays or targets, splitters) and
-    // one-sided elements are being built (issue 12); until then such scenes
-    // are refused rather than answered by rules that ignore them.
-    if (!scene.single_trajectory() || scene.has_one_sided())
-        throw std::invalid_argument(
-            "splitters, one-sided elements and several rays or targets are not decided yet");
+    // The illumination question (several rays or targets, splitters) and
+    // one-sided elements (a non-injective step map) are decided by the
+    // reference tracer, whatever engine was asked for: the lattice and
+    // induction engines assume two-sided mirrors and one trajectory. The
+    // answer's engine says "reference".
+    if (options.path && (!scene.single_trajectory() || scene.has_one_sided()))
+        throw std::invalid_argument("certificates for scenes with splitters, one-sided elements "
+                                    "or several rays or targets are not supported yet");
+    if (!scene.single_trajectory()) return engine::solve_illumination(scene, options);
+    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
     switch (options.engine) {
     case Engine::reference:
         return engine::solve_by_reference(scene, options);
