@@ -5,6 +5,7 @@
 #include "engine/reference_step.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "orthoray/state_graph.hpp"
 #include "support/case_count.hpp"
 #include "support/random_optics.hpp"
 
@@ -205,4 +206,34 @@ TEST_CASE("illumination agrees with the lattice engine run per ray and target",
         }
     }
     CHECK(lit > cases / 2);
+}
+
+TEST_CASE("illumination: the reference engine and the state graph agree", "[optics][property]") {
+    std::mt19937_64 rng(1214);
+    test::RandomOpticsShape shape;
+    shape.scene.max_elements = 8;
+    const int cases = test::case_count(3000);
+    int compared = 0, lit = 0, unlit = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 2 == 0 ? 3 : 2;
+        shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
+        const Scene s = test::random_optics_scene(rng, shape);
+        if (s.single_trajectory()) continue;
+        const std::optional<Answer> graph = explore_illumination_graph(s, 200000);
+        if (!graph) continue;
+        ++compared;
+        const Answer a = solve(s);
+        INFO("case " << i << "\n" << write_scene(s));
+        CHECK(a.reason == graph->reason);
+        REQUIRE(a.targets.size() == graph->targets.size());
+        for (std::size_t t = 0; t < a.targets.size(); ++t) {
+            CHECK(a.targets[t].status == graph->targets[t].status);
+            CHECK(a.targets[t].reflections == graph->targets[t].reflections);
+            CHECK(a.targets[t].ray == graph->targets[t].ray);
+            (a.targets[t].status == Status::lit ? lit : unlit) += 1;
+        }
+    }
+    CHECK(compared > cases / 2);
+    CHECK(lit > 0);
+    CHECK(unlit > 0);
 }
