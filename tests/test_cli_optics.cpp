@@ -115,3 +115,17 @@ TEST_CASE("the .scene writer round-trips splitters, sides and several rays", "[r
     CHECK(back.rays[1].direction == s.rays[1].direction);
     CHECK(back.targets[1] == s.targets[1]);
 }
+
+TEST_CASE("convert round-trips the new scenes through JSON", "[cli][optics]") {
+    TempDir dir;
+    const std::string text =
+        dir.write("in.scene", splitter_scene + "ray 1 1 0 -1\n" + "mirror y- 4 x 0 1\n");
+    const std::string json = dir.path("mid.json"), back = dir.path("back.scene");
+    REQUIRE(run_cli("convert " + quote(text) + " " + quote(json)).status == 0);
+    REQUIRE(run_cli("convert " + quote(json) + " " + quote(back)).status == 0);
+    const orthoray::Scene original = orthoray::read_scene(slurp(text));
+    CHECK(slurp(back) == orthoray::write_scene(original));
+    // And both files get the same answer.
+    CHECK(run_cli("solve --json " + quote(text)).out.substr(0, 60) ==
+          run_cli("solve --json " + quote(json)).out.substr(0, 60));
+}
