@@ -220,6 +220,12 @@ Reason read_reason(const certify::CertificateReader& in) {
 
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name) {
+    // This checker reads the rules of semantics.md only: it would accept
+    // paths that ignore a one-sided element's back or a splitter's second
+    // branch, so it accepts nothing for such scenes (docs/optics.md).
+    if (!scene.single_trajectory() || scene.has_one_sided())
+        return {false, "invalid: certificates for scenes with splitters, one-sided elements or "
+                       "several rays or targets are not supported yet"};
     certify::CertificateReader in(certificate, certificate_name);
     PathCheck path(scene);
     Claim claim;
