@@ -5,13 +5,11 @@
 // in a forked child so that its peak resident memory (ru_maxrss from wait4)
 // is its own. Writes one CSV row per instance; bench/plot_bounds.gp draws it.
 // Floating point appears only in the timing and in the printed ratios.
+#include "child_process.hpp"
+
 #include "orthoray/bounds.hpp"
 #include "orthoray/generate.hpp"
 #include "orthoray/solve.hpp"
-
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -37,42 +35,17 @@ struct Instance {
     bool capped = false;
 };
 
-// Runs `work` in a child process; returns its one line of output and the
-// child's peak resident set size in KiB.
+// Runs `work` in a child process (child_process.hpp); returns its one line
+// of output and the child's peak resident set size in KiB.
 std::pair<std::string, long> in_child(const std::function<std::string()>& work) {
-    int fds[2];
-    if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
-    std::fflush(stdout);
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        close(fds[0]);
-        std::string line;
+    const bench::ChildOutput out = bench::run_in_child([&] {
         try {
-            line = work();
+            return work();
         } catch (const std::exception& e) {
-            line = std::string("error: ") + e.what();
+            return std::string("error: ") + e.what();
         }
-        const char* bytes = line.data();
-        std::size_t left = line.size();
-        while (left > 0) {
-            const ssize_t w = write(fds[1], bytes, left);
-            if (w <= 0) break;
-            bytes += w;
-            left -= static_cast<std::size_t>(w);
-        }
-        _exit(0);
-    }
-    close(fds[1]);
-    std::string line;
-    char buffer[4096];
-    for (ssize_t r; (r = read(fds[0], buffer, sizeof buffer)) > 0;)
-        line.append(buffer, static_cast<std::size_t>(r));
-    close(fds[0]);
-    int status = 0;
-    struct rusage ru {};
-    wait4(pid, &status, 0, &ru);
-    return {line, ru.ru_maxrss};
+    });
+    return {out.bytes, out.max_rss_kb};
 }
 
 // visited / bound as a decimal (for the CSV and the plots only).

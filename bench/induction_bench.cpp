@@ -201,7 +201,7 @@ Timed time_solve(const Scene& scene, Engine engine, int runs) {
         const auto begin = std::chrono::steady_clock::now();
         answer = solve(scene, options);
         wall.push_back(seconds_since(begin));
-        induction.push_back(answer.induction.seconds);
+        induction.push_back(answer.stats.induction.seconds);
         if (r == 0 && wall.back() > 2.0) break;
     }
     return {answer, median(wall), median(induction), static_cast<int>(wall.size())};
@@ -250,18 +250,20 @@ int run(const Options& o) {
                      std::string(to_string(g.expect->reason)) + " " +
                          g.expect->reflections.get_str(),
                      outcome(a));
-        const bool induced = a.engine == "induction";
-        const double log2_n = log_of(a.induction.states, 2);
-        const double k_log_n = static_cast<double>(a.induction.pieces) * log2_n;
-        const double ratio = k_log_n > 0 ? static_cast<double>(a.induction.steps) / k_log_n : 0;
+        const bool induced = a.engine == EngineUsed::induction;
+        const double log2_n = log_of(a.stats.induction.states, 2);
+        const double k_log_n = static_cast<double>(a.stats.induction.pieces) * log2_n;
+        const double ratio =
+            k_log_n > 0 ? static_cast<double>(a.stats.induction.steps) / k_log_n : 0;
         const std::string log10_r = format("%.4f", log_of(a.reflections, 10));
         const std::string reason = to_string(a.reason);
         csv.row({instance.family, instance.param, elements, "induction", reason,
                  a.reflections.get_str(), log10_r, std::to_string(ind.runs),
-                 format("%.6g", ind.seconds), induced ? std::to_string(a.induction.pieces) : "",
+                 format("%.6g", ind.seconds),
+                 induced ? std::to_string(a.stats.induction.pieces) : "",
                  induced ? format("%.4f", log2_n) : "",
-                 induced ? std::to_string(a.induction.steps) : "",
-                 induced ? std::to_string(a.induction.rounds) : "",
+                 induced ? std::to_string(a.stats.induction.steps) : "",
+                 induced ? std::to_string(a.stats.induction.rounds) : "",
                  induced ? format("%.6g", k_log_n) : "", induced ? format("%.4f", ratio) : "",
                  induced ? format("%.6g", ind.induction_seconds) : ""});
 
@@ -281,14 +283,15 @@ int run(const Options& o) {
                      a.reflections.get_str(), log10_r, "0", "", "", "", "", "", "", "", ""});
         }
         table.add({instance.family, instance.param, elements, reason, short_count(a.reflections),
-                   format("%.3g", ind.seconds), induced ? std::to_string(a.induction.pieces) : "-",
+                   format("%.3g", ind.seconds),
+                   induced ? std::to_string(a.stats.induction.pieces) : "-",
                    induced ? format("%.1f", log2_n) : "-",
-                   induced ? std::to_string(a.induction.steps) : "-",
-                   induced ? std::to_string(a.induction.rounds) : "-",
+                   induced ? std::to_string(a.stats.induction.steps) : "-",
+                   induced ? std::to_string(a.stats.induction.rounds) : "-",
                    induced ? format("%.2f", ratio) : "-", sim_text, speedup});
         std::fprintf(stderr, "  %-14s %-22s %-8s %-12s induction %.3g s (%s)  simulation %s s\n",
                      instance.family.c_str(), instance.param.c_str(), reason.c_str(),
-                     short_count(a.reflections).c_str(), ind.seconds, a.engine.c_str(),
+                     short_count(a.reflections).c_str(), ind.seconds, to_string(a.engine),
                      sim_text.c_str());
     }
     std::printf("Median wall time of %d fresh solve() call(s) per instance and engine "

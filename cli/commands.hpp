@@ -28,5 +28,4 @@ Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);
 Command add_render(CLI::App& app);
 
-
 } // namespace orthoray::cli

@@ -1,6 +1,7 @@
 // orthoray: decide whether a ray among axis-aligned mirrors reaches a point.
 #include "commands.hpp"
 #include "orthoray/parse.hpp"
+#include "orthoray/version.hpp"
 
 #include <cstdlib>
 #include <gmp.h>
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
         "docs/semantics.md. Pictures: docs/render.md."};
     app.name("orthoray");
     app.require_subcommand(1);
-    app.set_version_flag("--version", "orthoray 0.1.0");
+    app.set_version_flag("--version", std::string("orthoray ") + orthoray::version);
     Command solve = add_solve(app);
     Command verify = add_verify(app);
     Command pieces = add_pieces(app);

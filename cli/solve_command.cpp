@@ -88,9 +88,15 @@ void print_targets_text(const Answer& a) {
     }
 }
 
+// The engine a report names: the one that ran, or when none did (memory ran
+// out first) the one asked for.
+const char* engine_name(const Answer& a, const std::string& asked) {
+    return a.engine == EngineUsed::none ? asked.c_str() : to_string(a.engine);
+}
+
 // One JSON object. `reflections` and `period` are written as JSON integers
 // from their decimal text, so they are exact however large.
-void print_json(const Answer& a, double seconds) {
+void print_json(const Answer& a, const char* engine, double seconds) {
     std::string reflections = a.reflections.get_str();
     std::cout << "{\"answer\":" << nlohmann::json(answer_word(a)).dump()
               << ",\"reason\":" << nlohmann::json(to_string(a.reason)).dump();
@@ -100,18 +106,20 @@ void print_json(const Answer& a, double seconds) {
     if (a.reason == Reason::cycle)
         std::cout << ",\"tail\":" << a.tail.get_str() << ",\"period\":" << a.period().get_str();
     if (a.illumination()) print_targets_json(a);
-    std::cout << ",\"engine\":" << nlohmann::json(a.engine).dump()
-              << ",\"arithmetic\":" << nlohmann::json(a.arithmetic).dump();
-    if (!a.shooter.empty())
-        std::cout << ",\"shooter\":" << nlohmann::json(a.shooter).dump()
-                  << ",\"setup_seconds\":" << nlohmann::json(a.setup.seconds).dump()
-                  << ",\"grid_cells\":" << a.setup.cells << ",\"pieces\":" << a.setup.pieces;
-    if (a.engine == "induction")
-        std::cout << ",\"exchange_pieces\":" << a.induction.pieces
-                  << ",\"exchange_states\":" << a.induction.states.get_str()
-                  << ",\"induction_steps\":" << a.induction.steps
-                  << ",\"induction_rounds\":" << a.induction.rounds
-                  << ",\"induction_seconds\":" << nlohmann::json(a.induction.seconds).dump();
+    const Answer::Stats& stats = a.stats;
+    std::cout << ",\"engine\":" << nlohmann::json(engine).dump()
+              << ",\"arithmetic\":" << nlohmann::json(to_string(a.arithmetic)).dump();
+    if (a.shooter != ShooterUsed::none)
+        std::cout << ",\"shooter\":" << nlohmann::json(to_string(a.shooter)).dump()
+                  << ",\"setup_seconds\":" << nlohmann::json(stats.setup.seconds).dump()
+                  << ",\"grid_cells\":" << stats.setup.cells
+                  << ",\"pieces\":" << stats.setup.pieces;
+    if (a.engine == EngineUsed::induction)
+        std::cout << ",\"exchange_pieces\":" << stats.induction.pieces
+                  << ",\"exchange_states\":" << stats.induction.states.get_str()
+                  << ",\"induction_steps\":" << stats.induction.steps
+                  << ",\"induction_rounds\":" << stats.induction.rounds
+                  << ",\"induction_seconds\":" << nlohmann::json(stats.induction.seconds).dump();
     std::cout << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
 }
 
@@ -130,7 +138,7 @@ const char* limit_note(Limit limit) {
     return "";
 }
 
-void print_text(const Answer& a, double seconds) {
+void print_text(const Answer& a, const char* engine, double seconds) {
     print_targets_text(a);
     std::printf("answer       %s\n", answer_word(a));
     std::printf("reason       %s%s\n", to_string(a.reason),
@@ -142,21 +150,20 @@ void print_text(const Answer& a, double seconds) {
     else
         std::printf("%-12s %s\n", a.reason == Reason::cycle ? "period" : "reflections",
                     (a.reason == Reason::cycle ? a.period() : a.reflections).get_str().c_str());
-    std::printf("engine       %s (%s%s%s)\n", a.engine.c_str(), a.arithmetic.c_str(),
-                a.shooter.empty() ? "" : ", ", a.shooter.c_str());
-    if (a.engine == "induction")
+    std::printf("engine       %s (%s%s%s)\n", engine, to_string(a.arithmetic),
+                a.shooter == ShooterUsed::none ? "" : ", ", to_string(a.shooter));
+    if (a.engine == EngineUsed::induction)
         std::printf("induction    %llu steps on %zu pieces, %s states\n",
-                    static_cast<unsigned long long>(a.induction.steps), a.induction.pieces,
-                    a.induction.states.get_str().c_str());
+                    static_cast<unsigned long long>(a.stats.induction.steps),
+                    a.stats.induction.pieces, a.stats.induction.states.get_str().c_str());
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
 // What the run reports when memory ran out before an engine could say how
-// far it got (while reading or scaling the scene).
-Answer out_of_memory(const char* engine) {
+// far it got (while reading or scaling the scene): no engine ran.
+Answer out_of_memory() {
     Answer answer;
     answer.limit = Limit::memory;
-    answer.engine = engine;
     return answer;
 }
 
@@ -175,9 +182,9 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
     const InterruptGuard interrupts;
     auto report = [&](const Answer& answer, double seconds) {
         if (args.json)
-            print_json(answer, seconds);
+            print_json(answer, engine_name(answer, args.engine), seconds);
         else
-            print_text(answer, seconds);
+            print_text(answer, engine_name(answer, args.engine), seconds);
         if (!answer.decided()) return limit;
         return answer.yes() ? yes : no;
     };
@@ -187,7 +194,7 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
             load_scene(args.file,
                        scene_format_named(args.format)); // bad input ends here, before any output
     } catch (const std::bad_alloc&) {
-        return report(out_of_memory(args.engine.c_str()), 0);
+        return report(out_of_memory(), 0);
     }
     refuse_unsupported_certificate(scene, args);
     SolveOptions options;
@@ -213,14 +220,14 @@ int run(const SolveArgs& args, const CLI::Option* max_steps) {
                                                      args.certificate_format == "jsonl"
                                                          ? CertificateFormat::jsonl
                                                          : CertificateFormat::text);
-        options.path = writer.get();
+        writer->attach(options);
     }
     auto begin = std::chrono::steady_clock::now();
     Answer answer;
     try {
         answer = solve(scene, options);
     } catch (const std::bad_alloc&) {
-        answer = out_of_memory(args.engine.c_str());
+        answer = out_of_memory();
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

@@ -33,7 +33,7 @@ std::map<std::string, std::string> expectations() {
 
 } // namespace
 
-TEST_CASE("every file of the bad-input corpus has its exact message", "[cli][bad-input]") {
+TEST_CASE("every file of the bad-input corpus has its exact message", "[cli][bad-input][slow]") {
     const std::map<std::string, std::string> expected = expectations();
     CHECK(expected.size() >= 40);
     int scenes = 0, json_scenes = 0, certificates = 0;

@@ -226,7 +226,7 @@ BruteCount brute_force(const Scene& scene) {
 
 } // namespace
 
-TEST_CASE("bounds equal (2D) or exceed (3D) a brute-force count of the states", "[bounds]") {
+TEST_CASE("bounds equal (2D) or exceed (3D) a brute-force count of the states", "[bounds][slow]") {
     std::mt19937_64 rng(77);
     int compared[4] = {0, 0, 0, 0};
     for (int i = 0; i < 400; ++i) {
@@ -250,7 +250,7 @@ TEST_CASE("bounds equal (2D) or exceed (3D) a brute-force count of the states", 
     CHECK(compared[3] > 30);
 }
 
-TEST_CASE("the state graph's states fit the lattice bound", "[bounds]") {
+TEST_CASE("the state graph's states fit the lattice bound", "[bounds][slow]") {
     // explore_state_graph (Boost.Graph) enumerates the mirror states on its own;
     // it leaves absorbers out, so its count is at most the bound (equal
     // without absorbers), and the states reachable from the start are at most

@@ -62,7 +62,7 @@ struct Certified {
 Certified certify(const Scene& scene, SolveOptions options) {
     std::stringstream out;
     orthoray::CertificateWriter writer(out, scene);
-    options.path = &writer;
+    writer.attach(options);
     Certified result;
     result.answer = orthoray::solve(scene, options);
     writer.finish(result.answer);
@@ -248,7 +248,7 @@ TEST_CASE("the graph engine does not write certificates", "[certificate]") {
     orthoray::CertificateWriter writer(out, scene);
     SolveOptions options;
     options.engine = Engine::graph;
-    options.path = &writer;
+    writer.attach(options);
     CHECK_THROWS_AS(orthoray::solve(scene, options), std::invalid_argument);
 }
 

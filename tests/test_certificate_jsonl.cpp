@@ -29,7 +29,7 @@ std::string certify(const Scene& scene, CertificateFormat format,
                     orthoray::SolveOptions options = {}) {
     std::stringstream out;
     orthoray::CertificateWriter writer(out, scene, format);
-    options.path = &writer;
+    writer.attach(options);
     writer.finish(orthoray::solve(scene, options));
     return out.str();
 }

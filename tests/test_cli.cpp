@@ -60,7 +60,7 @@ nlohmann::json parse_json(const std::string& out) {
 
 // ---------------------------------------------------------------- bad input
 
-TEST_CASE("malformed scene files: status 2, no stdout, one FILE:LINE:COL line", "[cli]") {
+TEST_CASE("malformed scene files: status 2, no stdout, one FILE:LINE:COL line", "[cli][slow]") {
     TempDir dir;
     struct Case {
         const char* name;
@@ -145,7 +145,7 @@ TEST_CASE("a missing file or a directory is bad input", "[cli]") {
     CHECK(starts_with(r.err, missing + ":1:1: "));
 }
 
-TEST_CASE("usage errors: status 2, no stdout, one line", "[cli]") {
+TEST_CASE("usage errors: status 2, no stdout, one line", "[cli][slow]") {
     const std::string scene = quote(instance(box_corner));
     for (const std::string& args : {
              std::string(""),                   // no subcommand
@@ -438,7 +438,7 @@ TEST_CASE("generate writes the same bytes to stdout and -o, and they solve as ex
     CHECK(answer["reflections"].dump() == first.out.substr(at, first.out.find('\n', at) - at));
 }
 
-TEST_CASE("generate: each family runs from the command line", "[cli][generate]") {
+TEST_CASE("generate: each family runs from the command line", "[cli][generate][slow]") {
     for (const char* args : {"box --sides 3 5 --target far", "box --sides 2 3 4 --target generic",
                              "box --sides 4 6 --start 1 0 --direction 1 2 --target-point 1 1",
                              "square --direction 5 3", "hallway --length 100 --slope 1/7",
@@ -456,7 +456,7 @@ TEST_CASE("generate: each family runs from the command line", "[cli][generate]")
           std::string::npos);
 }
 
-TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate]") {
+TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate][slow]") {
     for (const char* args : {
              "generate",                                  // no family
              "generate frobnicate",                       // unknown family
@@ -540,7 +540,7 @@ TEST_CASE("bounds: bad input and usage are status 2", "[cli][bounds]") {
     require_bad_input(r);
 }
 
-TEST_CASE("solve on generated long orbits gives the closed-form answer", "[cli]") {
+TEST_CASE("solve on generated long orbits gives the closed-form answer", "[cli][slow]") {
     // The command line steps in chunks (it polls for limits and signals) and
     // switches 2D runs to piece tables: both must resume exactly. Each scene
     // states its answer in an '# expect:' line.

@@ -45,7 +45,8 @@ std::vector<std::string> instance_names() {
 
 } // namespace
 
-TEST_CASE("convert round-trips every instance and solve agrees on both formats", "[cli][json]") {
+TEST_CASE("convert round-trips every instance and solve agrees on both formats",
+          "[cli][json][slow]") {
     TempDir dir;
     for (const std::string& name : instance_names()) {
         INFO(name);
@@ -66,7 +67,7 @@ TEST_CASE("convert round-trips every instance and solve agrees on both formats",
     }
 }
 
-TEST_CASE("the format option overrides the extension", "[cli][json]") {
+TEST_CASE("the format option overrides the extension", "[cli][json][slow]") {
     TempDir dir;
     const std::string json = dir.path("box.json");
     REQUIRE(run_cli("convert " + quote(instance("2d/box-corner-3x5.scene")) + " " + quote(json))
@@ -142,7 +143,7 @@ TEST_CASE("JSON Lines certificates verify, and tampered ones do not", "[cli][jso
     CHECK(no_file.err.find("--certificate") != std::string::npos);
 }
 
-TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli][render]") {
+TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli][render][slow]") {
     TempDir dir;
     const std::string scene = instance("2d/box-corner-3x5.scene");
     const std::string svg = dir.path("box.svg");
@@ -183,7 +184,7 @@ TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli]
     require_bad_input(run_cli("render " + quote(scene) + " --steps 0 -o " + quote(not_written)));
 }
 
-TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render]") {
+TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render][slow]") {
     TempDir dir;
     const std::string png = dir.path("cube.png");
     const CliResult r = run_cli("render " + quote(instance("3d/corner-cube-retroreflector.scene")) +

@@ -84,15 +84,15 @@ TEST_CASE("corner shot in boxes beyond 64 bits", "[closed-form][big]") {
     Scene s = box(3 * big, 5 * big);
     s.ray().direction = {1, 1, 0};
     s.target() = {3 * big, 5 * big, 0};
-    CHECK(solve_with(s).arithmetic == "int128"); // 5 * 2^100 < 2^123
-    CHECK(solve_with(box(3, 5)).arithmetic == "int64");
+    CHECK(solve_with(s).arithmetic == ArithmeticUsed::int128); // 5 * 2^100 < 2^123
+    CHECK(solve_with(box(3, 5)).arithmetic == ArithmeticUsed::int64);
     const Integer huge = Integer(1) << 130;
     for (int a = 1; a <= 5; ++a)
         for (int b = 1; b <= 5; ++b) check_box_corner(a * huge, b * huge, Arithmetic::automatic);
     s = box(3 * huge, 5 * huge);
     s.ray().direction = {1, 1, 0};
     s.target() = {3 * huge, 5 * huge, 0};
-    CHECK(solve_with(s).arithmetic == "gmp");
+    CHECK(solve_with(s).arithmetic == ArithmeticUsed::gmp);
 }
 
 TEST_CASE("the reference tracer agrees with the closed form", "[closed-form]") {

@@ -48,7 +48,7 @@ const ExchangePiece& piece_at(const IntervalExchange& e, const Integer& c) {
 
 } // namespace
 
-TEST_CASE("the exchange is the step map on every state", "[exchange]") {
+TEST_CASE("the exchange is the step map on every state", "[exchange][slow]") {
     std::mt19937_64 rng(2026);
     int reflecting = 0, dead = 0, hits = 0;
     for (int scene = 0; scene < 600; ++scene) {
@@ -66,8 +66,8 @@ TEST_CASE("the exchange is the step map on every state", "[exchange]") {
         ls.target_reachable = true;
         for (int j = 0; j < 2; ++j) ls.target[j] = test::pick(rng, -range, range);
 
-        const lattice::UniformGrid<Integer, 2> grid(ls);
-        const auto table = lattice::PieceTable<Integer>::build(ls, grid, 1'000'000);
+        const shoot::UniformGrid<Integer, 2> grid(ls);
+        const auto table = shoot::PieceTable<Integer>::build(ls, grid, 1'000'000);
         REQUIRE(table);
         const IntervalExchange e = build_exchange(ls, grid, *table, x, x_negative);
         INFO("scene " << scene);
@@ -86,7 +86,7 @@ TEST_CASE("the exchange is the step map on every state", "[exchange]") {
             imaged[image.get_ui()] = true;
 
             const StateAt s = state_at(e, c);
-            const lattice::Shot<Integer> shot = grid.shoot(s.p, s.negative);
+            const shoot::Shot<Integer> shot = grid.shoot(s.p, s.negative);
             // The segment from s passes the target: target - p = tau * sigma, 0 <= tau <= t.
             Integer tau = ((s.negative & 1u) ? -1 : 1) * (ls.target[0] - s.p[0]);
             const bool passes = tau >= 0 && (shot.escape || tau <= shot.t) &&

@@ -3,6 +3,7 @@
 // the reason it introduces (the message is matched, so a check that never
 // fires fails the test).
 #include "support/certificate_outcome.hpp"
+#include "support/portable_random.hpp"
 #include "support/random_scene.hpp"
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
@@ -395,7 +396,7 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
             }
         }
     }
-    std::shuffle(transversals.begin(), transversals.end(), rng);
+    orthoray::test::shuffle(transversals, rng);
     std::map<BruteState, std::size_t> raw_of;
     std::vector<BruteState> raw_states;
     std::vector<std::size_t> transversal_of;
@@ -502,10 +503,10 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
     for (std::size_t z = 0; z < n; ++z) {
         bool extend = z >= 2 && !pieces.empty() && pieces.back().kind == kind[z] && !hit[z] &&
                       !pieces.back().hit && image[z] == image[z - 1] + 1 &&
-                      std::bernoulli_distribution(0.95)(rng);
+                      orthoray::test::chance(rng, 95);
         if (extend && kind[z] == reflect) extend = same_transversal(z) && same_image_transversal(z);
         if (extend && kind[z] != reflect)
-            extend = same_transversal(z) || std::bernoulli_distribution(0.5)(rng);
+            extend = same_transversal(z) || orthoray::test::chance(rng, 50);
         if (extend && raw_of_rot(z) == 0) extend = kind[z] != reflect; // a wrap
         if (extend) {
             ++pieces.back().l;
@@ -565,7 +566,7 @@ std::optional<Brute> brute_certificate(const Scene& scene, std::mt19937_64& rng,
         REQUIRE(ri < pieces.size());
         Piece& D = pieces[di];
         Piece& R = pieces[ri];
-        const bool cycle = std::bernoulli_distribution(0.5)(rng);
+        const bool cycle = orthoray::test::chance(rng, 50);
         ++result.steps;
         if (di == ri) {
             out << "step invariant " << di << "\n";
@@ -897,7 +898,8 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
 
 // ----------------------------------------------------------------- random --
 
-TEST_CASE("brute-force induction certificates of random scenes verify", "[induction-certificate]") {
+TEST_CASE("brute-force induction certificates of random scenes verify",
+          "[induction-certificate][slow]") {
     std::mt19937_64 rng(20261122);
     orthoray::test::RandomSceneShape shape;
     shape.max_elements = 10;
@@ -937,8 +939,7 @@ TEST_CASE("brute-force induction certificates of random scenes verify", "[induct
             for (std::string line; std::getline(in, line);) lines.push_back(line);
         }
         for (int attempt = 0; attempt < 3; ++attempt) {
-            const std::size_t at =
-                std::uniform_int_distribution<std::size_t>(2, lines.size() - 2)(rng);
+            const std::size_t at = orthoray::test::pick_index(rng, 2, lines.size() - 2);
             std::istringstream words(lines[at]);
             std::vector<std::string> t;
             for (std::string w; words >> w;) t.push_back(w);
@@ -947,10 +948,9 @@ TEST_CASE("brute-force induction certificates of random scenes verify", "[induct
                 if (orthoray::read_number(t[j]).status == orthoray::NumberToken::Status::ok)
                     numeric.push_back(j);
             if (numeric.empty()) continue;
-            const std::size_t j =
-                numeric[std::uniform_int_distribution<std::size_t>(0, numeric.size() - 1)(rng)];
+            const std::size_t j = numeric[orthoray::test::pick_index(rng, 0, numeric.size() - 1)];
             const Rational v = orthoray::read_number(t[j]).value;
-            const Rational changed = v + (std::bernoulli_distribution(0.5)(rng) ? 1 : -1);
+            const Rational changed = v + (orthoray::test::chance(rng, 50) ? 1 : -1);
             t[j] = orthoray::to_string(changed);
             std::vector<std::string> copy = lines;
             copy[at].clear();
@@ -1090,8 +1090,7 @@ std::string other_word(const std::string& word, std::mt19937_64& rng) {
             if (w == word) {
                 std::string pick = word;
                 while (pick == word)
-                    pick = family[std::uniform_int_distribution<std::size_t>(0, family.size() -
-                                                                                    1)(rng)];
+                    pick = family[orthoray::test::pick_index(rng, 0, family.size() - 1)];
                 return pick;
             }
     return word;
@@ -1106,20 +1105,20 @@ std::string tamper_once(const std::string& text, std::mt19937_64& rng, std::stri
         for (std::string line; std::getline(in, line);) lines.push_back(line);
     }
     for (;;) {
-        const std::size_t at = std::uniform_int_distribution<std::size_t>(2, lines.size() - 2)(rng);
+        const std::size_t at = orthoray::test::pick_index(rng, 2, lines.size() - 2);
         std::vector<std::string> t;
         {
             std::istringstream words(lines[at]);
             for (std::string w; words >> w;) t.push_back(w);
         }
         if (t.size() < 2) continue;
-        const std::size_t j = std::uniform_int_distribution<std::size_t>(1, t.size() - 1)(rng);
+        const std::size_t j = orthoray::test::pick_index(rng, 1, t.size() - 1);
         const orthoray::NumberToken n = orthoray::read_number(t[j]);
         std::string changed;
         if (n.status == orthoray::NumberToken::Status::ok) {
-            const int delta = std::uniform_int_distribution<int>(1, 3)(rng);
-            changed = orthoray::to_string(n.value +
-                                          (std::bernoulli_distribution(0.5)(rng) ? delta : -delta));
+            const int delta = orthoray::test::pick(rng, 1, 3);
+            changed =
+                orthoray::to_string(n.value + (orthoray::test::chance(rng, 50) ? delta : -delta));
         } else if (t[j] == "hit" && j + 1 == t.size() && t[0] == "piece") {
             changed = "";
         } else {
@@ -1141,7 +1140,7 @@ std::string tamper_once(const std::string& text, std::mt19937_64& rng, std::stri
 } // namespace
 
 TEST_CASE("the induction engine's certificates of random scenes verify, tampered ones do not",
-          "[induction-certificate][engine]") {
+          "[induction-certificate][engine][slow]") {
     std::mt19937_64 rng(8101);
     struct Family {
         orthoray::test::RandomSceneShape shape;
@@ -1157,22 +1156,23 @@ TEST_CASE("the induction engine's certificates of random scenes verify, tampered
     int induced = 0, tampered = 0, rejected = 0, neutral = 0, jsonl = 0;
     int by_reason[4] = {};
     for (Family& family : families) {
-        family.shape.box_chance = 0.9;
+        family.shape.box_percent = 90;
         int got = 0;
         for (int attempt = 0; got < family.goal && attempt < 20 * family.goal; ++attempt) {
             Scene scene = orthoray::test::random_scene(rng, family.shape);
             scene.target() = orthoray::test::random_target(rng, scene, family.shape);
-            const bool json = std::bernoulli_distribution(0.25)(rng);
+            const bool json = orthoray::test::chance(rng, 25);
             std::stringstream out;
             orthoray::CertificateWriter writer(out, scene,
                                                json ? orthoray::CertificateFormat::jsonl
                                                     : orthoray::CertificateFormat::text);
             orthoray::SolveOptions o;
             o.engine = orthoray::Engine::induction;
-            o.path = &writer;
+            writer.attach(o);
             const orthoray::Answer answer = orthoray::solve(scene, o);
             writer.finish(answer);
-            if (answer.engine != "induction") continue; // answered on the first segments
+            if (answer.engine != orthoray::EngineUsed::induction)
+                continue; // answered on the first segments
             const std::string text = out.str();
             INFO("scene:\n" << orthoray::write_scene(scene) << "certificate:\n" << text);
             REQUIRE(text.find("induction") != std::string::npos);
@@ -1216,7 +1216,7 @@ TEST_CASE("the induction engine's certificates of random scenes verify, tampered
 }
 
 TEST_CASE("the engines' certificates of huge family instances verify",
-          "[induction-certificate][engine]") {
+          "[induction-certificate][engine][slow]") {
     using orthoray::BoxFamily;
     std::vector<orthoray::GeneratedScene> scenes;
     const Integer big_a = (Integer(1) << 61) - 1, big_b("1000000000000000000");
@@ -1250,7 +1250,7 @@ TEST_CASE("the engines' certificates of huge family instances verify",
             orthoray::CertificateWriter writer(out, g.scene);
             orthoray::SolveOptions o;
             o.engine = engine;
-            o.path = &writer;
+            writer.attach(o);
             const orthoray::Answer answer = orthoray::solve(g.scene, o);
             writer.finish(answer);
             REQUIRE(answer.decided());
@@ -1258,7 +1258,7 @@ TEST_CASE("the engines' certificates of huge family instances verify",
                 CHECK(answer.reason == g.expect->reason);
                 CHECK(answer.reflections == g.expect->reflections);
             }
-            induced += answer.engine == "induction";
+            induced += answer.engine == orthoray::EngineUsed::induction;
             const Outcome outcome = verify(g.scene, out.str());
             INFO("verify said: " << outcome.message);
             CHECK(outcome.message == std::string("valid: ") + orthoray::to_string(answer.reason) +

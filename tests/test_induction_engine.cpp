@@ -51,7 +51,7 @@ void check_scene(const Scene& scene, Tally& tally) {
     o.shooter = Shooter::pieces;
     REQUIRE(summary(solve(scene, o)) == summary(simulated));
     ++tally.scenes;
-    if (induced.engine != "induction") return;
+    if (induced.engine != EngineUsed::induction) return;
     ++tally.induced;
     tally.referenced += reference.decided();
     ++tally.by_reason[static_cast<int>(induced.reason)];
@@ -61,7 +61,7 @@ void check_scene(const Scene& scene, Tally& tally) {
 // scenes answer within their first two segments, before it starts).
 void run_family(std::uint64_t seed, int count, test::RandomSceneShape shape, Tally& tally) {
     std::mt19937_64 rng(seed);
-    shape.box_chance = 0.9;
+    shape.box_percent = 90;
     const int goal = tally.induced + count;
     for (int attempt = 0; tally.induced < goal && attempt < 10 * count; ++attempt) {
         Scene scene = test::random_scene(rng, shape);
@@ -73,7 +73,7 @@ void run_family(std::uint64_t seed, int count, test::RandomSceneShape shape, Tal
 } // namespace
 
 TEST_CASE("induction agrees with simulation and the reference on random 2D scenes",
-          "[induction][property]") {
+          "[induction][property][slow]") {
     Tally tally;
     // Rational and integral coordinates, crowded scenes, long thin ones.
     run_family(7001, test::case_count(2000), {2, 12, 6, 3, 3}, tally);
@@ -185,7 +185,7 @@ TEST_CASE("induction decides huge boxes and hallways", "[induction]") {
         const Answer a = solve_with(g.scene, Engine::induction);
         REQUIRE(a.reason == Reason::hit);
         REQUIRE(a.reflections == box_corner_reflections(m, n));
-        REQUIRE(a.engine == "induction");
+        REQUIRE(a.engine == EngineUsed::induction);
     }
     // The hallway: y = 0 and y = 1 for x in [0, 10^30], slope just under
     // 1/2, so about 5 * 10^29 reflections; then the ray escapes past the end.

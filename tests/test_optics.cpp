@@ -43,7 +43,7 @@ TEST_CASE("a one-way mirror makes a rho-shaped cycle", "[optics]") {
         CHECK(a.tail == 1);
         CHECK(a.period() == 2);
         CHECK(a.reflections == 3);
-        CHECK(a.engine == "reference");
+        CHECK(a.engine == EngineUsed::reference);
     }
     // A target on the tail is hit; one on the cycle too.
     Scene on_tail = s;
@@ -62,7 +62,7 @@ TEST_CASE("a splitter lights targets on both of its branches", "[optics]") {
     check_lit(a.targets[1], 1, 1); // reflected back
     CHECK(a.targets[2].status == Status::unlit);
     CHECK(a.states == 3); // the start and the two states leaving the splitter
-    CHECK(a.engine == "reference");
+    CHECK(a.engine == EngineUsed::reference);
 
     Scene lit = s;
     lit.targets.pop_back();
@@ -143,15 +143,15 @@ std::optional<Answer> direct_answer(const Scene& scene, std::uint64_t cap) {
 TEST_CASE("rho cycles agree with a direct computation", "[optics][property]") {
     std::mt19937_64 rng(1212);
     test::RandomOpticsShape shape;
-    shape.splitter_chance = 0;
-    shape.one_sided_chance = 0.5;
+    shape.splitter_percent = 0;
+    shape.one_sided_percent = 50;
     shape.max_rays = 1;
     shape.max_targets = 1;
     int rho = 0, decided = 0;
     const int cases = test::case_count(600);
     for (int i = 0; i < cases; ++i) {
         shape.scene.dim = i % 3 == 0 ? 3 : 2;
-        shape.scene.box_chance = 0.7;
+        shape.scene.box_percent = 70;
         const Scene s = test::random_optics_scene(rng, shape);
         const std::optional<Answer> direct = direct_answer(s, 20000);
         if (!direct) continue;
@@ -173,8 +173,8 @@ TEST_CASE("illumination agrees with the lattice engine run per ray and target",
     // least (reflections, ray) over the single trajectories that hit it.
     std::mt19937_64 rng(1213);
     test::RandomOpticsShape shape;
-    shape.splitter_chance = 0;
-    shape.one_sided_chance = 0;
+    shape.splitter_percent = 0;
+    shape.one_sided_percent = 0;
     const int cases = test::case_count(400);
     int lit = 0;
     for (int i = 0; i < cases; ++i) {

@@ -91,7 +91,7 @@ void check_scene(const Scene& scene, Tally& tally) {
     CertificateWriter writer(cert, scene);
     SolveOptions o;
     o.max_steps = step_cap;
-    o.path = &writer;
+    writer.attach(o);
     const Answer certified = solve(scene, o);
     writer.finish(certified);
     REQUIRE(summary(certified) == summary(lattice));
@@ -115,7 +115,7 @@ void run_family(std::uint64_t seed, int count, const test::RandomSceneShape& sha
 
 } // namespace
 
-TEST_CASE("engines, state graph and verifier agree on random 2D scenes", "[property]") {
+TEST_CASE("engines, state graph and verifier agree on random 2D scenes", "[property][slow]") {
     Tally tally;
     test::RandomSceneShape rational{2, 12, 6, 3, 3}, integral{2, 12, 6, 1, 2};
     run_family(20261122, test::case_count(1500), rational, tally);
@@ -128,7 +128,7 @@ TEST_CASE("engines, state graph and verifier agree on random 2D scenes", "[prope
     CHECK(tally.graph_checked > test::case_count(1500));
 }
 
-TEST_CASE("engines, state graph and verifier agree on random 3D scenes", "[property]") {
+TEST_CASE("engines, state graph and verifier agree on random 3D scenes", "[property][slow]") {
     Tally tally;
     test::RandomSceneShape rational{3, 12, 4, 2, 2}, integral{3, 10, 3, 1, 1};
     run_family(77, test::case_count(1000), rational, tally);

@@ -2,6 +2,9 @@
 // map point by point on thousands of random small exchanges, and against
 // the closed form of a rotation far too long to iterate.
 #include "induction/rauzy_induction.hpp"
+#include "support/portable_random.hpp"
+
+#include "support/counting_observer.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -16,9 +19,9 @@ namespace {
 
 // Pieces with these lengths (piece 0 has length 1: x), images in the order
 // `image_order`, and the given events.
-IntervalExchange exchange_of(const std::vector<long>& lengths,
-                             const std::vector<std::size_t>& image_order,
-                             const std::vector<EventKind>& events) {
+IntervalExchange make_exchange(const std::vector<long>& lengths,
+                               const std::vector<std::size_t>& image_order,
+                               const std::vector<ExchangeEvent>& events) {
     IntervalExchange e;
     Integer at = 0;
     for (std::size_t i = 0; i < lengths.size(); ++i) {
@@ -26,10 +29,10 @@ IntervalExchange exchange_of(const std::vector<long>& lengths,
         p.start = at;
         p.length = lengths[i];
         at += lengths[i];
-        p.hit = events[i] == EventKind::hit;
-        p.kind = events[i] == EventKind::escape     ? PieceKind::escape
-                 : events[i] == EventKind::absorbed ? PieceKind::absorbed
-                                                    : PieceKind::reflect;
+        p.hit = events[i] == ExchangeEvent::hit;
+        p.kind = events[i] == ExchangeEvent::escape     ? PieceKind::escape
+                 : events[i] == ExchangeEvent::absorbed ? PieceKind::absorbed
+                                                        : PieceKind::reflect;
         e.pieces.push_back(p);
     }
     e.size = at;
@@ -42,18 +45,18 @@ IntervalExchange exchange_of(const std::vector<long>& lengths,
 }
 
 // The orbit of 0, one point at a time.
-OrbitOfFirst iterate(const IntervalExchange& e) {
-    OrbitOfFirst orbit;
+InducedOrbit iterate(const IntervalExchange& e) {
+    InducedOrbit orbit;
     Integer p = 0;
     for (long t = 0;; ++t) {
         std::size_t i = 0;
         while (!(e.pieces[i].start <= p && p < e.pieces[i].start + e.pieces[i].length)) ++i;
         const ExchangePiece& piece = e.pieces[i];
-        const EventKind event = piece.hit                           ? EventKind::hit
-                                : piece.kind == PieceKind::escape   ? EventKind::escape
-                                : piece.kind == PieceKind::absorbed ? EventKind::absorbed
-                                                                    : EventKind::none;
-        if (event != EventKind::none) {
+        const ExchangeEvent event = piece.hit                           ? ExchangeEvent::hit
+                                    : piece.kind == PieceKind::escape   ? ExchangeEvent::escape
+                                    : piece.kind == PieceKind::absorbed ? ExchangeEvent::absorbed
+                                                                        : ExchangeEvent::none;
+        if (event != ExchangeEvent::none) {
             orbit.event = event;
             orbit.offset = t;
             return orbit;
@@ -66,47 +69,35 @@ OrbitOfFirst iterate(const IntervalExchange& e) {
     }
 }
 
-// Counts the steps a sink receives, to hold the engine's own count to it.
-class CountingSink : public StepSink {
-public:
-    std::uint64_t steps = 0, rounds = 0;
-    void top(std::size_t, std::size_t) override { ++steps; }
-    void bottom(std::size_t, std::size_t) override { ++steps; }
-    void equal(std::size_t, std::size_t) override { ++steps; }
-    void invariant(std::size_t) override { ++steps; }
-    void top_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-    void bottom_cycle(std::size_t, const Integer&) override { ++steps, ++rounds; }
-};
-
 } // namespace
 
 TEST_CASE("induction finds the orbit of x on random small exchanges", "[rauzy]") {
     std::mt19937_64 rng(11);
     int with_event = 0, cycles = 0, accelerated = 0;
     for (int trial = 0; trial < 4000; ++trial) {
-        const std::size_t k = std::uniform_int_distribution<std::size_t>(1, 9)(rng);
+        const std::size_t k = test::pick_index(rng, 1, 9);
         std::vector<long> lengths(k, 1);
-        for (std::size_t i = 1; i < k; ++i)
-            lengths[i] = std::uniform_int_distribution<long>(1, trial % 2 ? 40 : 4)(rng);
+        for (std::size_t i = 1; i < k; ++i) lengths[i] = test::pick(rng, 1, trial % 2 ? 40 : 4);
         std::vector<std::size_t> order(k);
         std::iota(order.begin(), order.end(), std::size_t{0});
-        std::shuffle(order.begin(), order.end(), rng);
-        std::vector<EventKind> events(k, EventKind::none);
+        test::shuffle(order, rng);
+        std::vector<ExchangeEvent> events(k, ExchangeEvent::none);
         for (auto& ev : events) {
-            const int roll = std::uniform_int_distribution<int>(0, 9)(rng);
-            ev = roll == 0   ? EventKind::hit
-                 : roll == 1 ? EventKind::escape
-                 : roll == 2 ? EventKind::absorbed
-                             : EventKind::none;
+            const int roll = test::pick(rng, 0, 9);
+            ev = roll == 0   ? ExchangeEvent::hit
+                 : roll == 1 ? ExchangeEvent::escape
+                 : roll == 2 ? ExchangeEvent::absorbed
+                             : ExchangeEvent::none;
         }
-        const IntervalExchange e = exchange_of(lengths, order, events);
-        CountingSink sink;
+        const IntervalExchange e = make_exchange(lengths, order, events);
+        // The steps an observer receives, to hold the engine's own count to it.
+        test::CountingObserver sink;
         const auto induced = induce(e, &sink, {});
         REQUIRE(induced);
-        const OrbitOfFirst expected = iterate(e);
+        const InducedOrbit expected = iterate(e);
         INFO("trial " << trial);
         REQUIRE(induced->event == expected.event);
-        if (expected.event == EventKind::none) {
+        if (expected.event == ExchangeEvent::none) {
             REQUIRE(induced->period == expected.period);
             ++cycles;
         } else {
@@ -142,7 +133,7 @@ TEST_CASE("induction gives a rotation's period in few steps", "[rauzy]") {
         REQUIRE(orbit);
         Integer g;
         mpz_gcd(g.get_mpz_t(), n.get_mpz_t(), a.get_mpz_t());
-        REQUIRE(orbit->event == EventKind::none);
+        REQUIRE(orbit->event == ExchangeEvent::none);
         REQUIRE(orbit->period == n / g);
         // Acceleration makes it Euclid's algorithm: O(log N) steps.
         CHECK(orbit->steps < 400);
@@ -154,12 +145,11 @@ TEST_CASE("induction takes about k log N steps, and stops when asked", "[rauzy]"
     std::mt19937_64 rng(5);
     const std::size_t k = 2000;
     std::vector<long> lengths(k, 1);
-    for (std::size_t i = 1; i < k; ++i)
-        lengths[i] = std::uniform_int_distribution<long>(1, long{1} << 60)(rng);
+    for (std::size_t i = 1; i < k; ++i) lengths[i] = uniform(rng, 1, std::int64_t{1} << 60);
     std::vector<std::size_t> order(k);
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::shuffle(order.begin(), order.end(), rng);
-    const IntervalExchange e = exchange_of(lengths, order, std::vector<EventKind>(k));
+    test::shuffle(order, rng);
+    const IntervalExchange e = make_exchange(lengths, order, std::vector<ExchangeEvent>(k));
     int polls = 0;
     CHECK_FALSE(induce(e, nullptr, [&](std::uint64_t) { return ++polls > 0; }));
     CHECK(polls == 1);

@@ -1,8 +1,9 @@
 // Pictures: the SVG is well-formed XML with the expected views, elements,
 // markers and caption; the drawn path has the segments the answer implies;
-// long paths are thinned to a bounded file and the caption says so; the
-// path from a certificate (either format) is the path from the solver; tick
-// labels are exact.
+// long paths are thinned to a bounded file and the caption says so, and
+// are drawn in bands shaded from early to late; the views of a 3D scene share
+// one scale; the path from a certificate (either format) is the path from
+// the solver; tick labels are exact.
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/render.hpp"
@@ -13,6 +14,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -83,6 +85,13 @@ std::size_t count_char(const std::string& text, char c) {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), c));
 }
 
+// The path data of all trajectory bands, early to late.
+std::string trajectory(const XmlDocument& doc) {
+    std::string d;
+    for (const XmlElement* e : with_class(doc, "path", "trajectory")) d += e->attributes.at("d");
+    return d;
+}
+
 std::string caption(const XmlDocument& doc) {
     std::string all;
     for (const XmlElement* e : with_class(doc, "text", "caption")) all += e->text + "\n";
@@ -110,11 +119,12 @@ TEST_CASE("a 2D picture has the mirrors, markers, caption and the whole path", "
     REQUIRE(mirrors.size() == 1);
     CHECK(count_char(mirrors[0]->attributes.at("d"), 'M') == 4); // four mirrors
     CHECK(with_class(p.xml, "path", "absorber").empty());
-    const auto path = with_class(p.xml, "path", "trajectory");
-    REQUIRE(path.size() == 1);
-    // 6 reflections: 6 segments between the 7 points, then on to the target.
-    CHECK(count_char(path[0]->attributes.at("d"), 'L') == 7);
-    CHECK(count_char(path[0]->attributes.at("d"), 'M') == 1);
+    // 6 reflections: 6 segments between the 7 points, then on to the target;
+    // so short a path gets a band, and a shade, for each segment.
+    const auto bands = with_class(p.xml, "path", "trajectory");
+    CHECK(bands.size() == 7);
+    CHECK(count_char(trajectory(p.xml), 'L') == 7);
+    CHECK(count_char(trajectory(p.xml), 'M') == 7);
     CHECK(with_class(p.xml, "circle", "start").size() == 1);
     CHECK(with_class(p.xml, "path", "start-arrow").size() == 1);
     CHECK(with_class(p.xml, "path", "target").size() == 1);
@@ -129,9 +139,7 @@ TEST_CASE("an escape is drawn out to the frame and an absorption is marked", "[r
     const Picture escape = draw(instance("2d/escape-after-three-reflections.scene"));
     REQUIRE(escape.xml.well_formed);
     REQUIRE(escape.answer.reason == Reason::escape);
-    const auto path = with_class(escape.xml, "path", "trajectory");
-    REQUIRE(path.size() == 1);
-    CHECK(count_char(path[0]->attributes.at("d"), 'L') == 4); // 3 segments + the final ray
+    CHECK(count_char(trajectory(escape.xml), 'L') == 4); // 3 segments + the final ray
 
     const Picture absorbed = draw(instance("2d/absorbed-after-three-reflections.scene"));
     REQUIRE(absorbed.xml.well_formed);
@@ -152,7 +160,7 @@ TEST_CASE("a 3D picture has three projections and an oblique view", "[render]") 
     std::size_t face_count = 0;
     for (const XmlElement* f : faces) face_count += count_char(f->attributes.at("d"), 'Z');
     CHECK(face_count == 3 + 3);
-    CHECK(with_class(p.xml, "path", "trajectory").size() == 4);
+    CHECK(with_class(p.xml, "path", "trajectory").size() >= 4);
     CHECK(with_class(p.xml, "path", "target").size() == 4);
 }
 
@@ -172,9 +180,7 @@ TEST_CASE("a long periodic path is thinned to a small file and the caption says 
     const Picture cut = draw(scene, 200'000, tiny);
     REQUIRE(cut.xml.well_formed);
     CHECK(caption(cut.xml).find("cut at the 100-vertex cap") != std::string::npos);
-    const auto path = with_class(cut.xml, "path", "trajectory");
-    REQUIRE(path.size() == 1);
-    const std::string& d = path[0]->attributes.at("d");
+    const std::string d = trajectory(cut.xml);
     CHECK(count_char(d, 'L') + count_char(d, 'M') <= 100);
 }
 
@@ -189,7 +195,7 @@ TEST_CASE("a certificate's path draws like the solver's, in both formats", "[ren
             std::stringstream cert;
             orthoray::CertificateWriter writer(cert, scene, format);
             orthoray::SolveOptions options;
-            options.path = &writer;
+            writer.attach(options);
             writer.finish(orthoray::solve(scene, options));
 
             SceneRenderer renderer(scene);
@@ -231,4 +237,64 @@ TEST_CASE("tick values are exact round numbers", "[render]") {
     REQUIRE(far.size() >= 3);
     CHECK(far[1].fraction == Approx(far.back().fraction / static_cast<double>(far.size() - 1)));
     CHECK(far[1].label == "5e399");
+}
+
+TEST_CASE("the views of a 3D scene share one scale", "[render]") {
+    // The 2 x 3 x 5 box: each side appears in two projections, at one length
+    // in pixels in both; before, each view had a scale of its own, and the
+    // short sides were stretched.
+    const Picture p = draw(instance("3d/box-corner-2x3x5.scene"));
+    REQUIRE(p.xml.well_formed);
+    std::vector<double> width, height;
+    for (const XmlElement* e : with_class(p.xml, "rect", "frame")) {
+        width.push_back(std::stod(e->attributes.at("width")));
+        height.push_back(std::stod(e->attributes.at("height")));
+    }
+    REQUIRE(width.size() == 4);                        // xy, xz, yz, oblique
+    CHECK(width[0] == Approx(width[1]).margin(0.1));   // x in xy and xz
+    CHECK(height[0] == Approx(width[2]).margin(0.1));  // y in xy and yz
+    CHECK(height[1] == Approx(height[2]).margin(0.1)); // z in xz and yz
+    // And the scale is the frame's: x : z as 2 : 5 up to the frame's padding
+    // (4% of the longest side on each end).
+    CHECK(width[1] / height[1] == Approx((2 + 0.4) / (5 + 0.4)).epsilon(0.01));
+    // The oblique view's axis key stays left of its plot area, clear of the
+    // start marker at the frame's corner.
+    const auto frames = with_class(p.xml, "rect", "frame");
+    const double oblique_left = std::stod(frames[3]->attributes.at("x"));
+    const auto labels = with_class(p.xml, "text", "axis");
+    REQUIRE(labels.size() == 6 + 3);
+    for (std::size_t i = 6; i < labels.size(); ++i)
+        CHECK(std::stod(labels[i]->attributes.at("x")) < oblique_left);
+}
+
+TEST_CASE("a long path is shaded from early to late in a bounded number of bands", "[render]") {
+    // 997 x 1000 box, 45 degrees: about 2000 distinct segments a period.
+    Scene scene = orthoray::read_scene("dim 2\nmirror x 0 y 0 1000\nmirror x 997 y 0 1000\n"
+                                       "mirror y 0 x 0 997\nmirror y 1000 x 0 997\n"
+                                       "ray 0 0 1 1\ntarget 500 -1\n");
+    const Picture p = draw(scene, 1500);
+    REQUIRE(p.xml.well_formed);
+    const auto bands = with_class(p.xml, "path", "trajectory");
+    // The band size doubles as the path grows: 8 to 16 bands at the end.
+    CHECK(bands.size() >= 8);
+    CHECK(bands.size() <= 16);
+    // Every band has its own colour, the first one the ramp's start (amber)
+    // and the last its end (purple).
+    std::vector<std::string> colours;
+    for (const XmlElement* b : bands) colours.push_back(b->attributes.at("stroke"));
+    CHECK(colours.front() == "#f0a30a");
+    CHECK(colours.back() == "#5c1878");
+    std::vector<std::string> distinct = colours;
+    std::sort(distinct.begin(), distinct.end());
+    CHECK(std::unique(distinct.begin(), distinct.end()) == distinct.end());
+    // The first band starts where the ray does: the bands are in path order.
+    const std::string& first = bands.front()->attributes.at("d");
+    const auto start = with_class(p.xml, "circle", "start");
+    REQUIRE(start.size() == 1);
+    double x = 0, y = 0;
+    REQUIRE(std::sscanf(first.c_str(), "M%lf %lf", &x, &y) == 2);
+    CHECK(x == Approx(std::stod(start[0]->attributes.at("cx"))).margin(0.5));
+    CHECK(y == Approx(std::stod(start[0]->attributes.at("cy"))).margin(0.5));
+    // A key to the shading is drawn.
+    CHECK(with_class(p.xml, "rect", "legend").size() == 8);
 }

@@ -630,7 +630,7 @@ TEST_CASE("mutated valid files give a Scene or a well-placed InputError", "[read
     CHECK(errors > 1000); // most mutations break the file
 }
 
-TEST_CASE("a 50,000-line file parses", "[reader]") {
+TEST_CASE("a 50,000-line file parses", "[reader][slow]") {
     std::string text = "# generated\ndim 2\n";
     const int mirrors = 49'996;
     text.reserve(static_cast<std::size_t>(mirrors) * 32);

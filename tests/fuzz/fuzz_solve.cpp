@@ -27,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.max_steps = 300;
     std::ostringstream certificate;
     orthoray::CertificateWriter writer(certificate, scene);
-    options.path = &writer;
+    writer.attach(options);
     const orthoray::Answer fast = orthoray::solve(scene, options);
     writer.finish(fast);
 

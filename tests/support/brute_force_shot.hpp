@@ -8,10 +8,10 @@
 namespace orthoray::test {
 
 template <class Int, int M>
-lattice::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (&p)[M],
-                                    unsigned negative) {
+shoot::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (&p)[M],
+                                  unsigned negative) {
     using lattice::from_integer;
-    lattice::Shot<Int> best;
+    shoot::Shot<Int> best;
     for (const lattice::LatticeElement& e : ls.elements) {
         const int a = e.axis;
         const bool neg_a = (negative >> a) & 1u;
@@ -25,7 +25,7 @@ lattice::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (
         }
         if (!on || (!best.escape && best.t < t)) continue;
         if (best.escape || t < best.t) {
-            best = lattice::Shot<Int>{};
+            best = shoot::Shot<Int>{};
             best.escape = false;
             best.t = t;
         }
@@ -40,7 +40,7 @@ lattice::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (
 
 // `got.mirror` is a mirror whose closed box holds the hit point p + t*sigma.
 template <class Int, int M>
-bool mirror_holds_hit(const lattice::LatticeScene& ls, const lattice::Shot<Int>& got,
+bool mirror_holds_hit(const lattice::LatticeScene& ls, const shoot::Shot<Int>& got,
                       const Int (&p)[M], unsigned negative) {
     if (got.mirror >= ls.elements.size()) return false;
     const lattice::LatticeElement& e = ls.elements[got.mirror];

@@ -6,15 +6,12 @@
 
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "support/portable_random.hpp"
 
 #include <algorithm>
 #include <random>
 
 namespace orthoray::test {
-
-inline int pick(std::mt19937_64& rng, int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
 
 // Up to `max_elements` elements with coordinates in [-range, range] times
 // `scale`, some of them copies of earlier ones (maybe turned into absorbers).

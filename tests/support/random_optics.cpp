@@ -1,7 +1,7 @@
 #include "support/random_optics.hpp"
 
 #include "engine/reference_step.hpp"
-#include "orthoray/generate.hpp"
+#include "support/portable_random.hpp"
 
 namespace orthoray::test {
 namespace {
@@ -41,12 +41,12 @@ Vector point_on_a_branch(std::mt19937_64& rng, const Scene& scene) {
 } // namespace
 
 Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape) {
-    auto chance = [&](double p) { return std::bernoulli_distribution(p)(rng); };
     Scene scene = random_scene(rng, shape.scene);
     for (Element& e : scene.elements) {
-        if (e.kind == ElementKind::mirror && chance(shape.splitter_chance))
+        if (e.kind == ElementKind::mirror && chance(rng, shape.splitter_percent))
             e.kind = ElementKind::splitter;
-        if (chance(shape.one_sided_chance)) e.side = chance(0.5) ? Side::plus : Side::minus;
+        if (chance(rng, shape.one_sided_percent))
+            e.side = chance(rng, 50) ? Side::plus : Side::minus;
     }
     // Extra rays borrow random_scene's choices of start and direction.
     const std::int64_t rays = uniform(rng, 1, shape.max_rays);
@@ -55,8 +55,8 @@ Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape) 
     scene.targets.clear();
     const std::int64_t targets = uniform(rng, 1, shape.max_targets);
     for (std::int64_t t = 0; t < targets; ++t)
-        scene.targets.push_back(chance(0.5) ? point_on_a_branch(rng, scene)
-                                            : random_point(rng, shape.scene));
+        scene.targets.push_back(chance(rng, 50) ? point_on_a_branch(rng, scene)
+                                                : random_point(rng, shape.scene));
     return scene;
 }
 

@@ -8,8 +8,8 @@ namespace orthoray::test {
 
 struct RandomOpticsShape {
     RandomSceneShape scene;
-    double splitter_chance = 0.2;  // per element (absorbers stay absorbers)
-    double one_sided_chance = 0.3; // per element
+    int splitter_percent = 20;  // per element (absorbers stay absorbers)
+    int one_sided_percent = 30; // per element
     int max_rays = 3, max_targets = 3;
 };
 

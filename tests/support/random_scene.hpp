@@ -16,7 +16,7 @@ struct RandomSceneShape {
     int range = 6;           // coordinates are k / den with |k| <= range * den
     int max_denominator = 3; // 1: integer scenes (small lattices, state graph feasible)
     int max_direction = 3;   // direction components in [-max, max]
-    double box_chance = 0.4; // how often an enclosing box keeps the ray in
+    int box_percent = 40;    // how often (in percent) an enclosing box keeps the ray in
 };
 
 Scene random_scene(std::mt19937_64& rng, const RandomSceneShape& shape);

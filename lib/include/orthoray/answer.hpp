@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace orthoray {
@@ -32,6 +31,16 @@ struct TargetAnswer {
     std::size_t ray = 0;
 };
 
+// What actually ran, as opposed to what SolveOptions asks for (where
+// "automatic" leaves the choice to the library). `none`: nothing ran, as
+// when memory ran out before an engine started.
+enum class EngineUsed { none, lattice, induction, reference, graph };
+// The integers it computed with: machine ones, GMP, or rationals (the
+// reference tracer and the state graph).
+enum class ArithmeticUsed { none, int64, int128, gmp, rational };
+// How the lattice engine found next hits; none for the other engines.
+enum class ShooterUsed { none, grid, bvh, section, pieces };
+
 struct Answer {
     Reason reason = Reason::limit;
     // hit: reflections strictly before the ray first reaches the target;
@@ -48,28 +57,29 @@ struct Answer {
     // the number of distinct states explored. Empty for a single trajectory.
     std::vector<TargetAnswer> targets;
     Integer states;
-    std::string engine; // which engine decided it ("lattice", "induction", "reference", "graph")
-    std::string
-        arithmetic; // integers the lattice engine used ("int64", "int128", "gmp"), or "rational"
     Limit limit = Limit::steps; // which limit, when reason is Reason::limit
-    std::string shooter;        // how the lattice engine found next hits: "grid", "bvh", "section",
-                                // "pieces" (2D), or ""
+    EngineUsed engine = EngineUsed::none;
+    ArithmeticUsed arithmetic = ArithmeticUsed::none;
+    ShooterUsed shooter = ShooterUsed::none;
 
-    // What the lattice engine built before or while stepping.
-    struct Setup {
-        double seconds = 0;     // time spent building the grid and piece tables
-        std::size_t cells = 0;  // uniform grid cells
-        std::size_t pieces = 0; // piece-table pieces (0 when none were built)
-    } setup;
+    // Diagnostics: what the engines built and did. They never change the answer.
+    struct Stats {
+        // What the lattice engine built before or while stepping.
+        struct Setup {
+            double seconds = 0;     // time spent building the grid and piece tables
+            std::size_t cells = 0;  // uniform grid cells
+            std::size_t pieces = 0; // piece-table pieces (0 when none were built)
+        } setup;
 
-    // What the induction engine did, when it decided (docs/induction.md).
-    struct Induction {
-        std::size_t pieces = 0;   // pieces of the interval exchange
-        Integer states;           // states it permutes
-        std::uint64_t steps = 0;  // induction steps, an accelerated one counting once
-        std::uint64_t rounds = 0; // of which accelerated
-        double seconds = 0;       // building the exchange and inducing
-    } induction;
+        // What the induction engine did, when it decided (docs/induction.md).
+        struct Induction {
+            std::size_t pieces = 0;   // pieces of the interval exchange
+            Integer states;           // states it permutes
+            std::uint64_t steps = 0;  // induction steps, an accelerated one counting once
+            std::uint64_t rounds = 0; // of which accelerated
+            double seconds = 0;       // building the exchange and inducing
+        } induction;
+    } stats;
 
     bool yes() const { return reason == Reason::hit || reason == Reason::lit; }
     bool illumination() const { return !targets.empty(); }
@@ -81,6 +91,12 @@ struct Answer {
 const char* to_string(Reason reason);
 // "steps", "time", "memory", "interrupt".
 const char* to_string(Limit limit);
+// "lattice", "induction", "reference", "graph"; "" for none.
+const char* to_string(EngineUsed engine);
+// "int64", "int128", "gmp", "rational"; "" for none.
+const char* to_string(ArithmeticUsed arithmetic);
+// "grid", "bvh", "section", "pieces"; "" for none.
+const char* to_string(ShooterUsed shooter);
 // "yes", "no", "unknown".
 const char* answer_word(const Answer& answer);
 

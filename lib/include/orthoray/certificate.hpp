@@ -18,17 +18,19 @@ enum class CertificateFormat {
     jsonl, // JSON Lines: one JSON object a line, for other tools
 };
 
-// Streams a certificate while a solver runs: attach it as SolveOptions::path,
+// Streams a certificate while a solver runs: attach() it to the options,
 // then call finish() with the answer. Memory stays O(1) in the path length.
 class CertificateWriter : public PathSink {
 public:
     CertificateWriter(std::ostream& out, const Scene& scene,
                       CertificateFormat format = CertificateFormat::text);
     ~CertificateWriter() override;
+    // Sets options.path to this writer and options.induction_observer to its
+    // induction section, which records the exchange and steps when the
+    // induction engine decides (docs/induction-certificates.md); the points
+    // so far are their prefix.
+    void attach(SolveOptions& options);
     void visit(const Vector& point, const Vector& direction) override;
-    // The induction engine records its exchange and steps through this
-    // (docs/induction-certificates.md); the points so far are their prefix.
-    induction::ExchangeRecorder* exchange_recorder() override;
     void finish(const Answer& answer);
 
 private:
@@ -41,7 +43,8 @@ private:
     std::uint64_t visits_ = 0;
     Vector first_reflection_point_, first_reflection_direction_;
     Vector last_direction_;
-    std::unique_ptr<InductionSection> induction_; // once the induction engine records
+    std::unique_ptr<InductionSection> induction_;
+    bool induced_ = false; // the induction engine has begun recording
 };
 
 struct Verdict {

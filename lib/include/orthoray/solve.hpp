@@ -48,18 +48,13 @@ enum class Shooter {
 // Receives the trajectory as it is computed: first the start point, then
 // every reflection point, then (for absorbed) the absorption point, each with
 // the direction the ray leaves it in. Used to stream certificates.
-namespace induction {
-class ExchangeRecorder;
-}
-
 class PathSink {
 public:
     virtual ~PathSink() = default;
     virtual void visit(const Vector& point, const Vector& direction) = 0;
-    // A sink that can also record an induction certificate (the exchange and
-    // its steps) offers a recorder; the path so far is then its prefix.
-    virtual induction::ExchangeRecorder* exchange_recorder() { return nullptr; }
 };
+
+class InductionObserver; // orthoray/exchange.hpp
 
 // A PathSink that keeps everything it is given. Its memory grows with the
 // path, so it suits short runs and tests; certificates stream instead.
@@ -97,6 +92,11 @@ struct SolveOptions {
     std::uint64_t max_graph_states = 2'000'000;
     PathSink* path = nullptr;
     RunMonitor* monitor = nullptr;
+    // Sees the exchange and every step when the induction engine decides
+    // (only once its answer stands within max_steps); the path so far is
+    // then the prefix up to the first reflection. A CertificateWriter
+    // attaches itself as both (CertificateWriter::attach).
+    InductionObserver* induction_observer = nullptr;
 };
 
 // Running out of memory while solving is a limit too (Reason::limit,

@@ -54,8 +54,8 @@ StateBounds compute_bounds(const Scene& scene, bool with_pieces) {
     b.refined_states = count.refined;
     b.lattice_states = b.points * (1u << ls.dim);
     if (with_pieces && scene.dim == 2 && ls.dim == 2) {
-        const lattice::UniformGrid<Integer, 2> grid(ls);
-        const auto table = lattice::PieceTable<Integer>::build(ls, grid, ~std::size_t{0});
+        const shoot::UniformGrid<Integer, 2> grid(ls);
+        const auto table = shoot::PieceTable<Integer>::build(ls, grid, ~std::size_t{0});
         b.pieces = table ? table->size() : 0;
     }
     return b;

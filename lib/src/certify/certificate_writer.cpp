@@ -5,7 +5,7 @@
 // and an end line; numbers are strings, so nothing is rounded.
 #include "orthoray/certificate.hpp"
 
-#include "induction/induction_engine.hpp"
+#include "orthoray/exchange.hpp"
 
 #include <initializer_list>
 #include <string>
@@ -14,11 +14,12 @@ namespace orthoray {
 
 // The induction part of a certificate: one statement a line, in text or as
 // a JSON object {"keyword": [operands]}.
-class CertificateWriter::InductionSection : public induction::ExchangeRecorder {
+class CertificateWriter::InductionSection : public InductionObserver {
 public:
     InductionSection(CertificateWriter& writer) : writer_(writer) {}
 
-    void begin(const induction::IntervalExchange& exchange) override {
+    void begin(const IntervalExchange& exchange) override {
+        writer_.induced_ = true;
         statement("method", {"induction"}, false);
         std::ostream& out = writer_.out_;
         const bool json = writer_.format_ == CertificateFormat::jsonl;
@@ -27,16 +28,16 @@ public:
         out << (json ? "}\n" : "\n");
         statement("scale", {exchange.scale[0].get_str(), exchange.scale[1].get_str()});
         statement("modulus", {exchange.modulus.get_str()}, false);
-        for (const induction::Transversal& t : exchange.transversals)
+        for (const Transversal& t : exchange.transversals)
             statement("transversal",
                       {std::to_string(t.axis), t.offset.get_str(), t.lo.get_str(), t.hi.get_str(),
                        (t.negative & 1u) ? "-1" : "1", (t.negative & 2u) ? "-1" : "1"});
         statement("first",
                   {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
-        for (const induction::ExchangePiece& p : exchange.pieces) {
-            const char* kind = p.kind == induction::PieceKind::reflect  ? "reflect"
-                               : p.kind == induction::PieceKind::escape ? "escape"
-                                                                        : "absorbed";
+        for (const ExchangePiece& p : exchange.pieces) {
+            const char* kind = p.kind == PieceKind::reflect  ? "reflect"
+                               : p.kind == PieceKind::escape ? "escape"
+                                                             : "absorbed";
             if (p.hit)
                 statement("piece",
                           {p.start.get_str(), p.length.get_str(), kind, p.image.get_str(), "hit"});
@@ -107,9 +108,10 @@ void CertificateWriter::write_vector(const Vector& x) {
 
 CertificateWriter::~CertificateWriter() = default;
 
-induction::ExchangeRecorder* CertificateWriter::exchange_recorder() {
+void CertificateWriter::attach(SolveOptions& options) {
     if (!induction_) induction_ = std::make_unique<InductionSection>(*this);
-    return induction_.get();
+    options.path = this;
+    options.induction_observer = induction_.get();
 }
 
 void CertificateWriter::visit(const Vector& point, const Vector& direction) {
@@ -141,7 +143,7 @@ void CertificateWriter::finish(const Answer& answer) {
     else
         out_ << "answer " << answer_word(answer) << "\nreason " << to_string(answer.reason)
              << "\nreflections " << reflections << '\n';
-    if (induction_) {
+    if (induced_) {
         // The exchange already says where x is: the verdict is the answer,
         // plus the period of a cycle.
         if (answer.reason == Reason::cycle) {

@@ -41,9 +41,16 @@ struct StepSpec {
 inline std::string step_text(const StepSpec& s) {
     static constexpr const char* names[] = {"top",       "bottom",    "equal",
                                             "invariant", "top-cycle", "bottom-cycle"};
-    std::string text =
-        std::string("step ") + names[static_cast<int>(s.kind)] + " " + s.first.get_str();
-    if (s.kind != StepKind::invariant) text += " " + s.second.get_str();
+    // Appended piece by piece: inlined into a caller, GCC 12 misreads
+    // std::string + std::string as an overlapping copy (-Wrestrict).
+    std::string text = "step ";
+    text += names[static_cast<int>(s.kind)];
+    text += ' ';
+    text += s.first.get_str();
+    if (s.kind != StepKind::invariant) {
+        text += ' ';
+        text += s.second.get_str();
+    }
     return text;
 }
 

@@ -36,6 +36,54 @@ const char* to_string(Limit limit) {
     return "?";
 }
 
+const char* to_string(EngineUsed engine) {
+    switch (engine) {
+    case EngineUsed::none:
+        return "";
+    case EngineUsed::lattice:
+        return "lattice";
+    case EngineUsed::induction:
+        return "induction";
+    case EngineUsed::reference:
+        return "reference";
+    case EngineUsed::graph:
+        return "graph";
+    }
+    return "?";
+}
+
+const char* to_string(ArithmeticUsed arithmetic) {
+    switch (arithmetic) {
+    case ArithmeticUsed::none:
+        return "";
+    case ArithmeticUsed::int64:
+        return "int64";
+    case ArithmeticUsed::int128:
+        return "int128";
+    case ArithmeticUsed::gmp:
+        return "gmp";
+    case ArithmeticUsed::rational:
+        return "rational";
+    }
+    return "?";
+}
+
+const char* to_string(ShooterUsed shooter) {
+    switch (shooter) {
+    case ShooterUsed::none:
+        return "";
+    case ShooterUsed::grid:
+        return "grid";
+    case ShooterUsed::bvh:
+        return "bvh";
+    case ShooterUsed::section:
+        return "section";
+    case ShooterUsed::pieces:
+        return "pieces";
+    }
+    return "?";
+}
+
 const char* answer_word(const Answer& answer) {
     if (!answer.decided()) return "unknown";
     return answer.yes() ? "yes" : "no";

@@ -39,8 +39,8 @@ struct Label {
 
 Answer solve_illumination(const Scene& scene, const SolveOptions& options) {
     Answer answer;
-    answer.engine = "reference";
-    answer.arithmetic = "rational";
+    answer.engine = EngineUsed::reference;
+    answer.arithmetic = ArithmeticUsed::rational;
     answer.targets.assign(scene.targets.size(), TargetAnswer{});
 
     std::map<State, std::size_t> id;

@@ -33,8 +33,8 @@ enum : std::size_t { all_rays_vertex = 0 };
 std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64_t max_states,
                                                  RunMonitor* monitor) {
     Answer answer;
-    answer.engine = "graph";
-    answer.arithmetic = "rational";
+    answer.engine = EngineUsed::graph;
+    answer.arithmetic = ArithmeticUsed::rational;
     answer.targets.assign(scene.targets.size(), TargetAnswer{});
 
     // Discover the reachable states, numbering them from 1 (0 is the

@@ -69,7 +69,7 @@ Int sign(unsigned negative, int j) {
 // Whether `target` lies on the closed segment p .. p + t*sigma (or on the
 // whole ray when the shot escapes): target - p = tau * sigma, 0 <= tau <= t.
 template <class Int, int M>
-bool passes(const Int (&target)[M], const State<Int, M>& s, const lattice::Shot<Int>& shot) {
+bool passes(const Int (&target)[M], const State<Int, M>& s, const shoot::Shot<Int>& shot) {
     const Int tau = sign<Int>(s.negative, 0) * Int(target[0] - s.p[0]);
     if (tau < 0 || (!shot.escape && shot.t < tau)) return false;
     for (int j = 1; j < M; ++j)
@@ -86,8 +86,8 @@ public:
             target_[j] = lattice::from_integer<Int>(ls.target[j]);
         }
         s_.negative = ls.start_direction;
-        answer_.engine = "lattice";
-        answer_.arithmetic = lattice::arithmetic_name(Int{});
+        answer_.engine = EngineUsed::lattice;
+        answer_.arithmetic = lattice::arithmetic_used(Int{});
         if (options_.path) report();
     }
 
@@ -102,7 +102,7 @@ public:
         const std::uint64_t stop =
             options_.max_steps ? std::min(until, *options_.max_steps) : until;
         if (pending_) {
-            const lattice::Shot<Int> shot = *pending_;
+            const shoot::Shot<Int> shot = *pending_;
             pending_.reset();
             if (const Step step = take(shot, stop); step != Step::next)
                 return step == Step::answered;
@@ -158,7 +158,7 @@ private:
     Detector detector_;
     Answer answer_;
 
-    std::optional<lattice::Shot<Int>> pending_; // computed, reflection not yet taken
+    std::optional<shoot::Shot<Int>> pending_; // computed, reflection not yet taken
 
     enum class Step { next, answered, paused };
     Step answered(Reason reason) {
@@ -168,7 +168,7 @@ private:
 
     // One step with `shot`: go on, an answer, or a pause at `stop` (the
     // shot kept for the next call).
-    [[gnu::always_inline]] Step take(const lattice::Shot<Int>& shot, std::uint64_t stop) {
+    [[gnu::always_inline]] Step take(const shoot::Shot<Int>& shot, std::uint64_t stop) {
         if (ls_.target_reachable && shot.near_target && passes(target_, s_, shot))
             return answered(Reason::hit);
         if (shot.escape) return answered(Reason::escape);
@@ -213,9 +213,9 @@ double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
-// Steps to the answer with `shooter`, reporting its name.
+// Steps to the answer with `shooter`, reporting which it is.
 template <class Int, int M, class Detector, class NextHit>
-Answer finish_with(Run<Int, M, Detector>& run, const char* name, const NextHit& shooter) {
+Answer finish_with(Run<Int, M, Detector>& run, ShooterUsed name, const NextHit& shooter) {
     run.answer().shooter = name;
     run.advance_in_chunks(
         [&](const State<Int, M>& s, std::uint32_t) { return shooter.shoot(s.p, s.negative); },
@@ -225,10 +225,10 @@ Answer finish_with(Run<Int, M, Detector>& run, const char* name, const NextHit& 
 
 // The same with a shooter built by `make`, its setup time counted.
 template <class Int, int M, class Detector, class Make>
-Answer build_and_finish(Run<Int, M, Detector>& run, const char* name, Make&& make) {
+Answer build_and_finish(Run<Int, M, Detector>& run, ShooterUsed name, Make&& make) {
     const auto begin = std::chrono::steady_clock::now();
     const auto shooter = make();
-    run.answer().setup.seconds += seconds_since(begin);
+    run.answer().stats.setup.seconds += seconds_since(begin);
     return finish_with(run, name, shooter);
 }
 
@@ -246,11 +246,11 @@ bool clustered(std::size_t fullest, std::size_t members, std::size_t cells) {
 template <class Int, int M, class Detector>
 Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const SolveOptions& options) {
     auto begin = std::chrono::steady_clock::now();
-    const lattice::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2);
-    Answer::Setup& setup = run.answer().setup;
+    const shoot::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2);
+    Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
-    run.answer().shooter = "grid";
+    run.answer().shooter = ShooterUsed::grid;
     // The induction engine stands on the tables and starts from state 1.
     const bool induce =
         ls.scene->dim == 2 &&
@@ -273,18 +273,18 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         begin = std::chrono::steady_clock::now();
         // The induction engine takes more: its cost grows with the pieces, not
         // with the reflections.
-        const std::size_t cap = 64 * grid.size() + 1024;
-        auto table = lattice::PieceTable<Int>::build(
-            ls, grid,
-            options.engine == Engine::induction ? std::max(cap, std::size_t{1} << 20) : cap);
+        auto table = shoot::PieceTable<Int>::build(ls, grid,
+                                                   options.engine == Engine::induction
+                                                       ? induction::piece_cap(grid.size())
+                                                       : 64 * grid.size() + 1024);
         if (table && ls.target_reachable) table->mark_target(grid, run.target());
         setup.seconds += seconds_since(begin);
         if (table) {
             setup.pieces = table->size();
-            run.answer().shooter = "pieces";
+            run.answer().shooter = ShooterUsed::pieces;
             // Until the ray first reflects, the tables cannot say where it is.
             bool placed = false;
-            typename lattice::PieceTable<Int>::Cursor where;
+            typename shoot::PieceTable<Int>::Cursor where;
             auto by_table = [&](const State<Int, M>& s, std::uint32_t mirror) {
                 if (!placed) {
                     if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
@@ -307,7 +307,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                 induction::Decision decision =
                     induction::decide(ls, grid, *table, options, run.reflections());
                 if (decision.answer) {
-                    decision.answer->setup = setup;
+                    decision.answer->stats.setup = setup;
                     return *decision.answer;
                 }
                 if (decision.limit) {
@@ -323,12 +323,12 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     if (options.shooter == Shooter::bvh ||
         (options.shooter == Shooter::automatic &&
          clustered(grid.fullest_cell(), grid.size(), grid.cell_count())))
-        return build_and_finish(run, "bvh",
-                                [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh,
+                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
     if (options.shooter == Shooter::section)
-        return build_and_finish(run, "section",
-                                [&] { return lattice::CrossSectionGrid<Int, M>(ls); });
-    return finish_with(run, "grid", grid);
+        return build_and_finish(run, ShooterUsed::section,
+                                [&] { return shoot::CrossSectionGrid<Int, M>(ls); });
+    return finish_with(run, ShooterUsed::grid, grid);
 }
 
 // 1D and 3D: the cross-section grid, which looks the ray's line up instead
@@ -338,26 +338,25 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
                    const SolveOptions& options) {
     switch (options.shooter) {
     case Shooter::grid:
-        return build_and_finish(run, "grid", [&] {
-            return lattice::UniformGrid<Int, M>(ls,
-                                                options.grid_density ? options.grid_density : 32);
+        return build_and_finish(run, ShooterUsed::grid, [&] {
+            return shoot::UniformGrid<Int, M>(ls, options.grid_density ? options.grid_density : 32);
         });
     case Shooter::bvh:
-        return build_and_finish(run, "bvh",
-                                [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh,
+                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
     default:
         break;
     }
     auto begin = std::chrono::steady_clock::now();
-    const lattice::CrossSectionGrid<Int, M> section(ls);
-    Answer::Setup& setup = run.answer().setup;
+    const shoot::CrossSectionGrid<Int, M> section(ls);
+    Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = section.cell_count();
     if (options.shooter == Shooter::automatic &&
         clustered(section.fullest_cell(), section.member_count(), section.cell_count()))
-        return build_and_finish(run, "bvh",
-                                [&] { return lattice::BoundingVolumeHierarchy<Int, M>(ls); });
-    return finish_with(run, "section", section);
+        return build_and_finish(run, ShooterUsed::bvh,
+                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+    return finish_with(run, ShooterUsed::section, section);
 }
 
 template <class Int, int M, class Detector>

@@ -93,8 +93,8 @@ std::uint64_t cycle_start(const Scene& scene, const RationalState& first, std::u
 template <class Detector>
 Answer trace(const Scene& scene, const SolveOptions& options) {
     Answer answer;
-    answer.engine = "reference";
-    answer.arithmetic = "rational";
+    answer.engine = EngineUsed::reference;
+    answer.arithmetic = ArithmeticUsed::rational;
     auto finish = [&](Reason reason, std::uint64_t reflections) {
         answer.reason = reason;
         answer.reflections = Integer(static_cast<unsigned long>(reflections));

@@ -18,8 +18,8 @@ namespace {
 Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     if (options.path) throw std::invalid_argument("the graph engine does not write certificates");
     Answer answer;
-    answer.engine = "graph";
-    answer.arithmetic = "rational";
+    answer.engine = EngineUsed::graph;
+    answer.arithmetic = ArithmeticUsed::rational;
     std::optional<StateGraphReport> report;
     try {
         report = explore_state_graph(scene, options.max_graph_states, options.monitor);
@@ -53,8 +53,8 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
     } catch (const std::bad_alloc&) {
     }
     Answer answer;
-    answer.engine = "graph";
-    answer.arithmetic = "rational";
+    answer.engine = EngineUsed::graph;
+    answer.arithmetic = ArithmeticUsed::rational;
     answer.limit = Limit::memory;
     answer.targets.assign(scene.targets.size(), TargetAnswer{});
     return answer;

@@ -89,8 +89,8 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
         if (monitor && k % 1024 == 0) {
             if (const std::optional<Limit> limit = monitor->poll(0)) {
                 StateGraphReport stopped;
-                stopped.answer.engine = "graph";
-                stopped.answer.arithmetic = "rational";
+                stopped.answer.engine = EngineUsed::graph;
+                stopped.answer.arithmetic = ArithmeticUsed::rational;
                 stopped.answer.limit = *limit;
                 return stopped;
             }
@@ -113,8 +113,8 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
                                     distance.data(), boost::on_tree_edge()))));
 
     Answer& answer = report.answer;
-    answer.engine = "graph";
-    answer.arithmetic = "rational";
+    answer.engine = EngineUsed::graph;
+    answer.arithmetic = ArithmeticUsed::rational;
     std::size_t first_pass = unreached, farthest = start_vertex;
     for (std::size_t u = 0; u < n; ++u) {
         if (distance[u] == unreached) continue;

@@ -20,9 +20,9 @@
 // 5. Rotation, so that x is 0.
 #pragma once
 
-#include "induction/interval_exchange.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "orthoray/exchange.hpp"
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
@@ -98,15 +98,15 @@ IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> p
 
 template <class Int>
 IntervalExchange
-build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<Int, 2>& grid,
-               const lattice::PieceTable<Int>& table, const Integer (&x)[2], unsigned x_negative) {
+build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
+               const shoot::PieceTable<Int>& table, const Integer (&x)[2], unsigned x_negative) {
     using lattice::to_integer;
     ExchangeLayout layout(scene, x, x_negative);
     const Integer& g = layout.modulus();
     std::vector<RawPiece> raw;
 
     auto image_of = [&](const Transversal& t, const Integer& u,
-                        const typename lattice::PieceTable<Int>::Piece& piece) {
+                        const typename shoot::PieceTable<Int>::Piece& piece) {
         const Integer from = to_integer(piece.from);
         const Integer at = to_integer(piece.t0) + piece.slope() * (u - from);
         Integer q[2];
@@ -118,11 +118,11 @@ build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<In
         return *located;
     };
 
-    using Kind = typename lattice::PieceTable<Int>::Kind;
+    using Kind = typename shoot::PieceTable<Int>::Kind;
     // The states of transversal t at positions first .. last (in the
     // class) all follow `piece`: one raw piece.
     auto add = [&](const Transversal& t, const Integer& first, const Integer& last,
-                   const typename lattice::PieceTable<Int>::Piece& table_piece) {
+                   const typename shoot::PieceTable<Int>::Piece& table_piece) {
         const Integer a = number_of(t, g, first);
         const Integer b = number_of(t, g, last);
         RawPiece piece;
@@ -186,7 +186,7 @@ build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<In
         for (unsigned d = 0; d < 4; ++d) {
             // A segment also passes its own first point: states on the target.
             if (const auto at = layout.locate(target, d)) hits.push_back(layout.raw(*at));
-            const lattice::Shot<Int> back = grid.shoot(p, d ^ 3u);
+            const shoot::Shot<Int> back = grid.shoot(p, d ^ 3u);
             if (back.escape || back.flip == 0) continue;
             Integer q[2];
             for (int j = 0; j < 2; ++j)
@@ -202,6 +202,24 @@ build_exchange(const lattice::LatticeScene& scene, const lattice::UniformGrid<In
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];
     return exchange;
+}
+
+// The exchange of the ray from the scene's start, x being the state after
+// its first reflection; nothing when the first shot escapes or is absorbed.
+template <class Int>
+std::optional<IntervalExchange> build_exchange_from_start(const lattice::LatticeScene& scene,
+                                                          const shoot::UniformGrid<Int, 2>& grid,
+                                                          const shoot::PieceTable<Int>& table) {
+    Int start[2];
+    for (int j = 0; j < 2; ++j) start[j] = lattice::from_integer<Int>(scene.start[j]);
+    const shoot::Shot<Int> first = grid.shoot(start, scene.start_direction);
+    if (first.escape || first.absorber || first.flip == 0) return std::nullopt;
+    Integer x[2];
+    for (int j = 0; j < 2; ++j)
+        x[j] = scene.start[j] + (((scene.start_direction >> j) & 1u)
+                                     ? Integer(-lattice::to_integer(first.t))
+                                     : lattice::to_integer(first.t));
+    return build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip);
 }
 
 } // namespace orthoray::induction

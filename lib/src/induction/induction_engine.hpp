@@ -5,23 +5,24 @@
 // Engine::automatic.
 #pragma once
 
-#include "induction/interval_exchange.hpp"
-#include "induction/rauzy_induction.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "orthoray/exchange.hpp"
 #include "orthoray/solve.hpp"
 #include "shoot/piece_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 
 namespace orthoray::induction {
 
-// Writes an induction certificate: the exchange, then every step (a
-// CertificateWriter offers one through PathSink::exchange_recorder()).
-class ExchangeRecorder : public StepSink {
-public:
-    virtual void begin(const IntervalExchange& exchange) = 0;
-};
+// The most pieces the induction engine lets the piece tables have: its cost
+// grows with the pieces, not with the reflections, so it allows more than
+// simulation does (64 a mirror, lattice_engine.cpp).
+inline std::size_t piece_cap(std::size_t elements) {
+    return std::max<std::size_t>(64 * elements + 1024, std::size_t{1} << 20);
+}
 
 struct Decision {
     std::optional<Answer> answer; // decided, within options.max_steps
@@ -32,8 +33,8 @@ struct Decision {
 // far, for the monitor). No answer and no limit means the answer needs more
 // reflections than options.max_steps allows: the caller simulates up to it.
 template <class Int>
-Decision decide(const lattice::LatticeScene& scene, const lattice::UniformGrid<Int, 2>& grid,
-                const lattice::PieceTable<Int>& table, const SolveOptions& options,
+Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
+                const shoot::PieceTable<Int>& table, const SolveOptions& options,
                 std::uint64_t reflections);
 
 } // namespace orthoray::induction

@@ -18,7 +18,7 @@ constexpr std::size_t none = ~std::size_t{0};
 template <class Int>
 struct Piece {
     Int length, ret, offset;
-    EventKind event = EventKind::none;
+    ExchangeEvent event = ExchangeEvent::none;
 };
 
 // A doubly linked order of piece numbers (the domain order or the image order).
@@ -63,7 +63,7 @@ private:
 // `a` becomes "a, then b": the first event of a if it has one, else b's.
 template <class Int>
 void then(Piece<Int>& a, const Piece<Int>& b) {
-    if (a.event == EventKind::none && b.event != EventKind::none) {
+    if (a.event == ExchangeEvent::none && b.event != ExchangeEvent::none) {
         a.event = b.event;
         a.offset = a.ret + b.offset;
     }
@@ -73,10 +73,10 @@ void then(Piece<Int>& a, const Piece<Int>& b) {
 // `a` becomes "b, `times` times, then a" (b's return time is r_b).
 template <class Int>
 void after(Piece<Int>& a, const Piece<Int>& b, const Int& times) {
-    if (b.event != EventKind::none) {
+    if (b.event != ExchangeEvent::none) {
         a.event = b.event;
         a.offset = b.offset;
-    } else if (a.event != EventKind::none) {
+    } else if (a.event != ExchangeEvent::none) {
         a.offset += times * b.ret;
     }
     a.ret += times * b.ret;
@@ -85,7 +85,7 @@ void after(Piece<Int>& a, const Piece<Int>& b, const Int& times) {
 // `a` becomes "a, then b `times` times".
 template <class Int>
 void then_repeated(Piece<Int>& a, const Piece<Int>& b, const Int& times) {
-    if (a.event == EventKind::none && b.event != EventKind::none) {
+    if (a.event == ExchangeEvent::none && b.event != ExchangeEvent::none) {
         a.event = b.event;
         a.offset = a.ret + b.offset;
     }
@@ -93,7 +93,7 @@ void then_repeated(Piece<Int>& a, const Piece<Int>& b, const Int& times) {
 }
 
 template <class Int>
-std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink* sink,
+std::optional<InducedOrbit> induce_on(const IntervalExchange& exchange, InductionObserver* observer,
                                       const std::function<bool(std::uint64_t)>& stop) {
     const std::size_t k = exchange.pieces.size();
     std::vector<Piece<Int>> piece(k);
@@ -102,10 +102,10 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
         piece[i].length = lattice::from_integer<Int>(e.length);
         piece[i].ret = 1;
         piece[i].offset = 0;
-        piece[i].event = e.hit                           ? EventKind::hit
-                         : e.kind == PieceKind::escape   ? EventKind::escape
-                         : e.kind == PieceKind::absorbed ? EventKind::absorbed
-                                                         : EventKind::none;
+        piece[i].event = e.hit                           ? ExchangeEvent::hit
+                         : e.kind == PieceKind::escape   ? ExchangeEvent::escape
+                         : e.kind == PieceKind::absorbed ? ExchangeEvent::absorbed
+                                                         : ExchangeEvent::none;
     }
     std::vector<std::size_t> by_start(k), by_image(k);
     std::iota(by_start.begin(), by_start.end(), std::size_t{0});
@@ -115,7 +115,7 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
     });
     Order domain(by_start), image(by_image);
 
-    OrbitOfFirst orbit;
+    InducedOrbit orbit;
     Int total, rounds;
     std::vector<std::size_t> walked;
     for (std::uint64_t iteration = 1;; ++iteration) {
@@ -125,7 +125,7 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
             // Piece 0 (x) is first in the domain: it is last only when alone.
             if (d == 0) break;
             ++orbit.steps;
-            if (sink) sink->invariant(d);
+            if (observer) observer->invariant(d);
             domain.remove(d);
             image.remove(d);
             continue;
@@ -135,7 +135,7 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
                                                               : 0;
         if (order == 0) {
             ++orbit.steps;
-            if (sink) sink->equal(r, d);
+            if (observer) observer->equal(r, d);
             then(piece[r], piece[d]);
             image.remove(r);
             image.replace(d, r);
@@ -168,9 +168,9 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
             piece[w].length -= rounds * total;
             ++orbit.steps;
             ++orbit.rounds;
-            if (sink) {
+            if (observer) {
                 const Integer count = lattice::to_integer(rounds);
-                top ? sink->top_cycle(w, count) : sink->bottom_cycle(w, count);
+                top ? observer->top_cycle(w, count) : observer->bottom_cycle(w, count);
             }
             continue;
         }
@@ -180,12 +180,12 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
             const std::size_t q = walked[i];
             ++orbit.steps;
             if (top) {
-                if (sink) sink->top(w, q);
+                if (observer) observer->top(w, q);
                 then(piece[q], piece[w]);
                 image.remove(q);
                 image.insert_after(q, w);
             } else {
-                if (sink) sink->bottom(w, q);
+                if (observer) observer->bottom(w, q);
                 after(piece[q], piece[w], Int(1));
                 domain.remove(q);
                 domain.insert_after(q, w);
@@ -193,7 +193,7 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
             piece[w].length -= piece[q].length;
         }
     }
-    orbit.arithmetic = lattice::arithmetic_name(Int{});
+    orbit.arithmetic = lattice::arithmetic_used(Int{});
     orbit.event = piece[0].event;
     orbit.offset = lattice::to_integer(piece[0].offset);
     orbit.period = lattice::to_integer(piece[0].ret);
@@ -202,13 +202,13 @@ std::optional<OrbitOfFirst> induce_on(const IntervalExchange& exchange, StepSink
 
 } // namespace
 
-std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* sink,
+std::optional<InducedOrbit> induce(const IntervalExchange& exchange, InductionObserver* observer,
                                    const std::function<bool(std::uint64_t)>& stop) {
     if (exchange.size < lattice::int64_limit())
-        return induce_on<std::int64_t>(exchange, sink, stop);
+        return induce_on<std::int64_t>(exchange, observer, stop);
     if (exchange.size < lattice::int128_limit())
-        return induce_on<lattice::int128_t>(exchange, sink, stop);
-    return induce_on<Integer>(exchange, sink, stop);
+        return induce_on<lattice::int128_t>(exchange, observer, stop);
+    return induce_on<Integer>(exchange, observer, stop);
 }
 
 } // namespace orthoray::induction

@@ -23,7 +23,7 @@
 // lengths; positions are never stored (the checker keeps them instead).
 #pragma once
 
-#include "induction/interval_exchange.hpp"
+#include "orthoray/exchange.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -31,32 +31,10 @@
 
 namespace orthoray::induction {
 
-enum class EventKind : std::uint8_t { none, hit, escape, absorbed };
-
-// Receives every step, in the words of docs/induction-certificates.md.
-class StepSink {
-public:
-    virtual ~StepSink() = default;
-    virtual void top(std::size_t d, std::size_t r) = 0;
-    virtual void bottom(std::size_t r, std::size_t d) = 0;
-    virtual void equal(std::size_t r, std::size_t d) = 0;
-    virtual void invariant(std::size_t d) = 0;
-    virtual void top_cycle(std::size_t d, const Integer& rounds) = 0;
-    virtual void bottom_cycle(std::size_t r, const Integer& rounds) = 0;
-};
-
-struct OrbitOfFirst {
-    EventKind event = EventKind::none;
-    Integer offset;           // the event happens at T^offset(x)
-    Integer period;           // the return time of x (meaningful without an event)
-    std::uint64_t steps = 0;  // steps taken, a cycle step counting once
-    std::uint64_t rounds = 0; // of which accelerated (cycle) steps
-    const char* arithmetic = ""; // the integers it ran on: "int64", "int128" or "gmp"
-};
-
 // Decides the orbit of x = 0. `stop` is asked every few thousand steps and
 // ends the run (std::nullopt) when it returns true.
-std::optional<OrbitOfFirst> induce(const IntervalExchange& exchange, StepSink* sink,
+// Every step goes to `observer`, if any (begin() is the caller's).
+std::optional<InducedOrbit> induce(const IntervalExchange& exchange, InductionObserver* observer,
                                    const std::function<bool(std::uint64_t)>& stop);
 
 } // namespace orthoray::induction

@@ -8,6 +8,7 @@
 // integers take everything else.
 #pragma once
 
+#include "orthoray/answer.hpp"
 #include "orthoray/number.hpp"
 
 #include <cstdint>
@@ -88,14 +89,14 @@ inline std::int64_t to_index(const Integer& x) {
     return x.get_si();
 }
 
-inline const char* arithmetic_name(std::int64_t) {
-    return "int64";
+inline ArithmeticUsed arithmetic_used(std::int64_t) {
+    return ArithmeticUsed::int64;
 }
-inline const char* arithmetic_name(int128_t) {
-    return "int128";
+inline ArithmeticUsed arithmetic_used(int128_t) {
+    return ArithmeticUsed::int128;
 }
-inline const char* arithmetic_name(const Integer&) {
-    return "gmp";
+inline ArithmeticUsed arithmetic_used(const Integer&) {
+    return ArithmeticUsed::gmp;
 }
 
 } // namespace orthoray::lattice

@@ -4,6 +4,13 @@
 // merged into it, and drawing stops at a vertex cap. A periodic path of 10^7
 // reflections thus costs what its distinct pixels cost, not what its length
 // costs.
+//
+// The path is also cut by order into at most max_bands bands of equal
+// numbers of segments, so the picture can shade it from early to late.
+// Since the length is not known in advance (the path streams), the band
+// size starts at one segment and doubles, merging neighbouring bands, each
+// time the bands would overflow: between max_bands / 2 and max_bands bands
+// at the end, in constant memory.
 #pragma once
 
 #include <algorithm>
@@ -14,16 +21,20 @@
 #include <optional>
 #include <string>
 #include <unordered_set>
+#include <vector>
 
 namespace orthoray::render {
 
 class PathThinner {
 public:
+    static constexpr std::size_t max_bands = 16;
+
     explicit PathThinner(std::size_t max_vertices) : max_vertices_(max_vertices) {}
 
     void add(double x0, double y0, double x1, double y1) {
         const Snapped a = snap(x0, y0), b = snap(x1, y1);
         if (a.x == b.x && a.y == b.y) return; // shorter than a pixel: nothing to see
+        select_band(segments_);
         ++segments_;
         const std::uint64_t ka = a.key(), kb = b.key();
         const std::uint64_t key = ka < kb ? (ka << 32 | kb) : (kb << 32 | ka);
@@ -46,7 +57,11 @@ public:
         pen_ = b;
     }
 
-    const std::string& path_data() const { return d_; }
+    // SVG path data of each band, early to late (a band may be empty when
+    // all its segments were merged into earlier ones).
+    const std::vector<std::string>& bands() const { return bands_; }
+    // Segments a full band stands for.
+    std::uint64_t band_size() const { return band_size_; }
     std::uint64_t segments() const { return segments_; }
     std::uint64_t drawn() const { return segments_ - merged_; }
     bool cut() const { return cut_; }
@@ -78,10 +93,26 @@ private:
         ++merged_;
         pen_.reset(); // the next drawn segment starts a new sub-path
     }
+    // Makes the band of segment `ordinal` current; a new band starts a new
+    // sub-path, so bands concatenate into valid path data.
+    void select_band(std::uint64_t ordinal) {
+        if (ordinal / band_size_ >= max_bands) {
+            for (std::size_t i = 0; i < max_bands / 2; ++i)
+                bands_[i] = bands_[2 * i] + bands_[2 * i + 1];
+            bands_.resize(max_bands / 2);
+            band_size_ *= 2;
+        }
+        const auto band = static_cast<std::size_t>(ordinal / band_size_);
+        if (band >= bands_.size()) {
+            bands_.resize(band + 1);
+            pen_.reset();
+        }
+        current_ = band;
+    }
     void append(char command, const Snapped& p) {
         char buffer[48];
         std::snprintf(buffer, sizeof buffer, "%c%g %g", command, p.x / 2.0, p.y / 2.0);
-        d_ += buffer;
+        bands_[current_] += buffer;
     }
     void move_to(const Snapped& p) { append('M', p); }
     void line_to(const Snapped& p) { append('L', p); }
@@ -92,7 +123,9 @@ private:
     bool cut_ = false;
     std::optional<Snapped> pen_;
     std::unordered_set<std::uint64_t> seen_;
-    std::string d_;
+    std::vector<std::string> bands_;
+    std::size_t current_ = 0;
+    std::uint64_t band_size_ = 1;
 };
 
 } // namespace orthoray::render

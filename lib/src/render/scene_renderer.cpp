@@ -1,87 +1,56 @@
-// Lays out the views of a scene, draws the elements and the streamed path
-// into them, and writes the SVG. Coordinates reach this file already
-// normalised by the exact frame (frame.cpp).
+// Draws the elements and the streamed path into the views laid out by
+// view_layout.cpp, and writes the SVG through svg_writer.hpp. Coordinates
+// reach this file already normalised by the exact frame (frame.cpp).
 #include "orthoray/render.hpp"
 
-#include "render/axis_ticks.hpp"
 #include "render/frame.hpp"
 #include "render/path_thinner.hpp"
+#include "render/svg_writer.hpp"
+#include "render/view_axes.hpp"
+#include "render/view_layout.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <unordered_set>
 
 namespace orthoray {
 namespace {
 
+using render::number_text;
+using render::Pixel;
 using render::Point3;
-struct Pixel {
-    double x = 0, y = 0;
-};
+using render::SvgWriter;
 
-// Page layout, in pixels.
-constexpr double margin_left = 78, margin_right = 24, margin_top = 30, margin_bottom = 46;
 constexpr double caption_line = 18;
 
-// The oblique view: x to the right, z up, y receding at 30 degrees.
-const double oblique_x = 0.5 * std::cos(std::numbers::pi / 6),
-             oblique_y = 0.5 * std::sin(std::numbers::pi / 6);
-
-std::string number_text(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.1f", value);
-    return buffer;
-}
-
-std::string escape_xml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            // Control bytes are not allowed in XML 1.0 at all.
-            if (static_cast<unsigned char>(c) >= 0x20 || c == '\t') out += c;
-        }
-    }
-    return out;
-}
-
-// One view: an orthographic projection onto axes (a, b), or the oblique view.
-struct View {
-    std::string title;
-    int a = 0, b = 1;
-    bool oblique = false;
-    double left = 0, top = 0;     // the plot area's corner on the page
-    double width = 0, height = 0; // the plot area's size
-    double scale = 1;             // pixels per normalised unit
+// A view with what is drawn in it.
+struct View : render::ViewPlacement {
     std::string mirrors, absorbers, faces_mirror, faces_absorber; // SVG path data
     std::size_t shapes = 0;
     render::PathThinner path;
 
-    explicit View(std::size_t max_vertices) : path(max_vertices) {}
-
-    // n: normalised coordinates (each in [0, extent]).
-    Pixel map(const Point3& n) const {
-        if (oblique)
-            return {left + (n[0] + oblique_x * n[1]) * scale,
-                    top + height - (n[2] + oblique_y * n[1]) * scale};
-        return {left + n[a] * scale, top + height - n[b] * scale};
-    }
+    View(render::ViewPlacement placement, std::size_t max_vertices)
+        : ViewPlacement(std::move(placement)), path(max_vertices) {}
 };
+
+// The path's colour at `fraction` of its length: amber early, through
+// vermilion, to deep purple late. Hues away from the mirrors' blue and the
+// start's green; dark at the end so the last turns stand out.
+std::string ramp_colour(double fraction) {
+    static constexpr std::array<std::array<double, 3>, 3> stops{
+        {{240, 163, 10}, {214, 64, 40}, {92, 24, 120}}};
+    const double f = std::clamp(fraction, 0.0, 1.0) * 2;
+    const std::size_t i = f >= 1 ? 1 : 0;
+    const double t = f - static_cast<double>(i);
+    char buffer[8];
+    int rgb[3];
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = static_cast<int>(std::lround(stops[i][c] + t * (stops[i + 1][c] - stops[i][c])));
+    std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+    return buffer;
+}
 
 } // namespace
 
@@ -99,54 +68,12 @@ struct SceneRenderer::Impl {
     std::optional<PathEnd> end;
 
     Impl(const Scene& s, const RenderOptions& o) : scene(s), options(o), frame(s) {
-        layout();
+        render::PageLayout page = render::lay_out_views(frame, scene.dim, options.view_size);
+        const std::size_t vertices = options.max_path_vertices / page.views.size();
+        for (render::ViewPlacement& v : page.views) views.emplace_back(std::move(v), vertices);
+        page_width = page.width;
+        page_height = page.height;
         draw_elements();
-    }
-
-    void layout() {
-        const double size = options.view_size;
-        const std::size_t view_count = scene.dim == 2 ? 1 : 4;
-        const std::size_t vertices = options.max_path_vertices / view_count;
-        auto add_view = [&](std::string title, int a, int b, bool oblique) {
-            View v(vertices);
-            v.title = std::move(title);
-            v.a = a;
-            v.b = b;
-            v.oblique = oblique;
-            const double w =
-                oblique ? frame.extent[0] + oblique_x * frame.extent[1] : frame.extent[a];
-            const double h =
-                oblique ? frame.extent[2] + oblique_y * frame.extent[1] : frame.extent[b];
-            v.scale = size / std::max(w, h);
-            v.width = w * v.scale;
-            v.height = h * v.scale;
-            views.push_back(std::move(v));
-        };
-        if (scene.dim == 2) {
-            add_view("", 0, 1, false);
-        } else {
-            add_view("xy (top)", 0, 1, false);
-            add_view("xz (front)", 0, 2, false);
-            add_view("yz (side)", 1, 2, false);
-            add_view("oblique", 0, 2, true);
-        }
-        // Views in rows of two; the caption goes above them.
-        const double cell_w = margin_left + size + margin_right;
-        const double cell_h = margin_top + size + margin_bottom;
-        for (std::size_t i = 0; i < views.size(); ++i) {
-            View& v = views[i];
-            v.left = static_cast<double>(i % 2) * cell_w + margin_left + (size - v.width) / 2;
-            v.top = static_cast<double>(i / 2) * cell_h + margin_top + (size - v.height) / 2;
-        }
-        page_width = cell_w * (views.size() > 1 ? 2 : 1);
-        page_height = cell_h * static_cast<double>((views.size() + 1) / 2);
-        if (views.size() == 1) { // one view: the page fits it, without blank bands
-            View& v = views.front();
-            v.left = margin_left;
-            v.top = margin_top;
-            page_width = margin_left + v.width + margin_right;
-            page_height = margin_top + v.height + margin_bottom;
-        }
     }
 
     // Elements as compact path data: a segment where the view sees the
@@ -262,81 +189,58 @@ struct SceneRenderer::Impl {
         return path.drawn() < path.segments() || cut();
     }
 
-    void write_view(std::ostream& out, const View& v, std::size_t index) const {
-        out << "<g class=\"view\" data-name=\"" << (v.title.empty() ? "xy" : v.title) << "\">\n";
-        out << "<clipPath id=\"clip" << index << "\"><rect x=\"" << number_text(v.left - 4)
-            << "\" y=\"" << number_text(v.top - 4) << "\" width=\"" << number_text(v.width + 8)
-            << "\" height=\"" << number_text(v.height + 8) << "\"/></clipPath>\n";
-        out << "<rect class=\"frame\" x=\"" << number_text(v.left) << "\" y=\""
-            << number_text(v.top) << "\" width=\"" << number_text(v.width) << "\" height=\""
-            << number_text(v.height) << "\"/>\n";
+    void write_view(SvgWriter& svg, const View& v, std::size_t index) const {
+        const std::string clip = "clip" + std::to_string(index);
+        svg.open("g", {{"class", "view"}, {"data-name", v.title.empty() ? "xy" : v.title}});
+        svg.open("clipPath", {{"id", clip}});
+        svg.empty("rect", {{"x", number_text(v.left - 4)},
+                           {"y", number_text(v.top - 4)},
+                           {"width", number_text(v.width + 8)},
+                           {"height", number_text(v.height + 8)}});
+        svg.close("clipPath");
+        svg.empty("rect", {{"class", "frame"},
+                           {"x", number_text(v.left)},
+                           {"y", number_text(v.top)},
+                           {"width", number_text(v.width)},
+                           {"height", number_text(v.height)}});
         if (!v.title.empty())
-            out << "<text class=\"title\" x=\"" << number_text(v.left) << "\" y=\""
-                << number_text(v.top - 8) << "\">" << escape_xml(v.title) << "</text>\n";
+            svg.text(
+                "text",
+                {{"class", "title"}, {"x", number_text(v.left)}, {"y", number_text(v.top - 8)}},
+                v.title);
         if (v.oblique)
-            write_oblique_axes(out, v);
+            render::write_oblique_axis_key(svg, v);
         else
-            write_axes(out, v);
-        out << "<g clip-path=\"url(#clip" << index << ")\">\n";
+            render::write_axes(svg, v, frame);
+        svg.open("g", {{"clip-path", "url(#" + clip + ")"}});
         auto path = [&](const char* cls, const std::string& d) {
-            if (!d.empty()) out << "<path class=\"" << cls << "\" d=\"" << d << "\"/>\n";
+            if (!d.empty()) svg.empty("path", {{"class", cls}, {"d", d}});
         };
         path("face-mirror", v.faces_mirror);
         path("face-absorber", v.faces_absorber);
         path("mirror", v.mirrors);
         path("absorber", v.absorbers);
-        path("trajectory", v.path.path_data());
-        write_markers(out, v);
-        out << "</g>\n</g>\n";
+        write_trajectory(svg, v);
+        write_markers(svg, v);
+        svg.close("g");
+        svg.close("g");
     }
 
-    void write_axes(std::ostream& out, const View& v) const {
-        const double bottom = v.top + v.height;
-        auto axis_line = [&](int axis, bool horizontal) {
-            const double length = horizontal ? v.width : v.height;
-            const int count = std::max(2, static_cast<int>(length / 90));
-            for (const render::Tick& t :
-                 render::axis_ticks(frame.lo[axis], frame.hi[axis], count)) {
-                const double pos = t.fraction * frame.extent[axis] * v.scale;
-                if (horizontal)
-                    out << "<line class=\"tick\" x1=\"" << number_text(v.left + pos) << "\" y1=\""
-                        << number_text(bottom) << "\" x2=\"" << number_text(v.left + pos)
-                        << "\" y2=\"" << number_text(bottom + 5) << "\"/><text class=\"tick\" x=\""
-                        << number_text(v.left + pos) << "\" y=\"" << number_text(bottom + 18)
-                        << "\" text-anchor=\"middle\">" << escape_xml(t.label) << "</text>\n";
-                else
-                    out << "<line class=\"tick\" x1=\"" << number_text(v.left - 5) << "\" y1=\""
-                        << number_text(bottom - pos) << "\" x2=\"" << number_text(v.left)
-                        << "\" y2=\"" << number_text(bottom - pos)
-                        << "\"/><text class=\"tick\" x=\"" << number_text(v.left - 8) << "\" y=\""
-                        << number_text(bottom - pos + 4) << "\" text-anchor=\"end\">"
-                        << escape_xml(t.label) << "</text>\n";
-            }
-        };
-        axis_line(v.a, true);
-        axis_line(v.b, false);
-        out << "<text class=\"axis\" x=\"" << number_text(v.left + v.width / 2) << "\" y=\""
-            << number_text(bottom + 36) << "\" text-anchor=\"middle\">" << axis_name(v.a)
-            << "</text>\n<text class=\"axis\" x=\"" << number_text(v.left - 62) << "\" y=\""
-            << number_text(v.top + v.height / 2) << "\">" << axis_name(v.b) << "</text>\n";
-    }
-
-    // The oblique view has no common scale to tick; it shows which way the
-    // axes run from the frame's low corner instead.
-    void write_oblique_axes(std::ostream& out, const View& v) const {
-        const Pixel o = v.map({0, 0, 0});
-        for (int j = 0; j < 3; ++j) {
-            Point3 tip{0, 0, 0};
-            tip[j] = frame.extent[j] * 0.25;
-            const Pixel p = v.map(tip);
-            out << "<line class=\"axis-arrow\" x1=\"" << number_text(o.x) << "\" y1=\""
-                << number_text(o.y) << "\" x2=\"" << number_text(p.x) << "\" y2=\""
-                << number_text(p.y) << "\"/><text class=\"axis\" x=\"" << number_text(p.x + 4)
-                << "\" y=\"" << number_text(p.y - 4) << "\">" << axis_name(j) << "</text>\n";
+    // The path, band by band in the order it was travelled, each band in
+    // its colour on the ramp (ramp_colour), so even a tangle shows which
+    // way the ray went.
+    void write_trajectory(SvgWriter& svg, const View& v) const {
+        const std::vector<std::string>& bands = v.path.bands();
+        const double last_band = static_cast<double>(std::max<std::size_t>(bands.size(), 2) - 1);
+        for (std::size_t i = 0; i < bands.size(); ++i) {
+            if (bands[i].empty()) continue;
+            svg.empty("path", {{"class", "trajectory"},
+                               {"stroke", ramp_colour(static_cast<double>(i) / last_band)},
+                               {"d", bands[i]}});
         }
     }
 
-    void write_markers(std::ostream& out, const View& v) const {
+    void write_markers(SvgWriter& svg, const View& v) const {
         // Start: a dot and an arrow along the start direction as this view sees it.
         const Pixel s = v.map(frame.normalised(scene.ray().start));
 
@@ -353,29 +257,40 @@ struct SceneRenderer::Impl {
             for (int j = 0; j < scene.dim; ++j) ahead[j] += 0.01 * d[j] / largest;
         const Pixel a = v.map(ahead);
         const double dx = a.x - s.x, dy = a.y - s.y, length = std::hypot(dx, dy);
-        out << "<circle class=\"start\" cx=\"" << number_text(s.x) << "\" cy=\"" << number_text(s.y)
-            << "\" r=\"5\"/>\n";
+        svg.empty(
+            "circle",
+            {{"class", "start"}, {"cx", number_text(s.x)}, {"cy", number_text(s.y)}, {"r", "5"}});
         if (length > 1e-6 && std::isfinite(length)) {
             const double ux = dx / length, uy = dy / length, tip_x = s.x + 34 * ux,
                          tip_y = s.y + 34 * uy;
-            out << "<path class=\"start-arrow\" d=\"M" << number_text(s.x) << " "
-                << number_text(s.y) << "L" << number_text(tip_x) << " " << number_text(tip_y) << "M"
-                << number_text(tip_x - 9 * ux + 5 * uy) << " "
-                << number_text(tip_y - 9 * uy - 5 * ux) << "L" << number_text(tip_x) << " "
-                << number_text(tip_y) << "L" << number_text(tip_x - 9 * ux - 5 * uy) << " "
-                << number_text(tip_y - 9 * uy + 5 * ux) << "\"/>\n";
+            svg.empty("path", {{"class", "start-arrow"},
+                               {"d", render::PathData()
+                                         .move(s.x, s.y)
+                                         .line(tip_x, tip_y)
+                                         .move(tip_x - 9 * ux + 5 * uy, tip_y - 9 * uy - 5 * ux)
+                                         .line(tip_x, tip_y)
+                                         .line(tip_x - 9 * ux - 5 * uy, tip_y - 9 * uy + 5 * ux)
+                                         .text()}});
         }
         if (end && end->reason == Reason::absorbed && last) {
             const Pixel p = v.map(*last);
-            out << "<rect class=\"absorbed\" x=\"" << number_text(p.x - 5) << "\" y=\""
-                << number_text(p.y - 5) << "\" width=\"10\" height=\"10\"/>\n";
+            svg.empty("rect", {{"class", "absorbed"},
+                               {"x", number_text(p.x - 5)},
+                               {"y", number_text(p.y - 5)},
+                               {"width", "10"},
+                               {"height", "10"}});
         }
         const Pixel t = v.map(frame.normalised(scene.target()));
-        out << "<path class=\"target\" d=\"M" << number_text(t.x - 7) << " " << number_text(t.y - 7)
-            << "L" << number_text(t.x + 7) << " " << number_text(t.y + 7) << "M"
-            << number_text(t.x - 7) << " " << number_text(t.y + 7) << "L" << number_text(t.x + 7)
-            << " " << number_text(t.y - 7) << "\"/><circle class=\"target\" cx=\""
-            << number_text(t.x) << "\" cy=\"" << number_text(t.y) << "\" r=\"9\"/>\n";
+        svg.empty("path", {{"class", "target"},
+                           {"d", render::PathData()
+                                     .move(t.x - 7, t.y - 7)
+                                     .line(t.x + 7, t.y + 7)
+                                     .move(t.x - 7, t.y + 7)
+                                     .line(t.x + 7, t.y - 7)
+                                     .text()}});
+        svg.empty(
+            "circle",
+            {{"class", "target"}, {"cx", number_text(t.x)}, {"cy", number_text(t.y)}, {"r", "9"}});
     }
 
     std::vector<std::string> caption_lines() const {
@@ -402,9 +317,35 @@ struct SceneRenderer::Impl {
         return lines;
     }
 
+    // A key to the path's shading at the caption's right: early, the ramp
+    // in steps, late.
+    void write_ramp_key(SvgWriter& svg, double caption_height) const {
+        constexpr int steps = 8;
+        constexpr double step_width = 10;
+        const double right = page_width - 12, y = -caption_height + 8;
+        const double ramp_left = right - 28 - steps * step_width;
+        svg.text("text",
+                 {{"class", "legend"},
+                  {"x", number_text(ramp_left - 4)},
+                  {"y", number_text(y + 10)},
+                  {"text-anchor", "end"}},
+                 "path: early");
+        for (int i = 0; i < steps; ++i)
+            svg.empty("rect", {{"class", "legend"},
+                               {"x", number_text(ramp_left + i * step_width)},
+                               {"y", number_text(y)},
+                               {"width", number_text(step_width)},
+                               {"height", "12"},
+                               {"fill", ramp_colour(i / (steps - 1.0))}});
+        svg.text("text",
+                 {{"class", "legend"}, {"x", number_text(right - 24)}, {"y", number_text(y + 10)}},
+                 "late");
+    }
+
     void write(std::ostream& out) const {
         const std::vector<std::string> lines = caption_lines();
-        const double caption_height = caption_line * static_cast<double>(lines.size()) + 12;
+        const double caption_height =
+            caption_line * static_cast<double>(std::max<std::size_t>(lines.size(), 1)) + 12;
         // Thinner lines when there are many elements, so that a maze of
         // 10^5 mirrors is not one blue square.
         const double element_stroke = elements_total <= 200    ? 2
@@ -412,42 +353,59 @@ struct SceneRenderer::Impl {
                                                                : 0.6;
         // Likewise a dense path, so the mirrors still show through it.
         const std::uint64_t drawn = fullest_path().drawn();
-        const double path_stroke = drawn <= 1000 ? 1.3 : drawn <= 20000 ? 0.8 : 0.4;
-        out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-            << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number_text(page_width)
-            << "\" height=\"" << number_text(page_height + caption_height) << "\" viewBox=\"0 "
-            << number_text(-caption_height) << " " << number_text(page_width) << " "
-            << number_text(page_height + caption_height) << "\">\n"
-            << "<style>\n"
-               "text{font-family:sans-serif;font-size:12px;fill:#222}\n"
-               "text.caption{font-size:14px}\n"
-               "text.title,text.axis{font-size:13px;font-weight:bold}\n"
-               ".frame{fill:none;stroke:#bbb;stroke-width:1}\n"
-               "line.tick{stroke:#888}\n"
-               ".axis-arrow{stroke:#666;stroke-width:1.5}\n"
-            << ".mirror{fill:none;stroke:#1f5fa8;stroke-width:" << element_stroke
-            << ";stroke-linecap:round}\n"
-            << ".absorber{fill:none;stroke:#111;stroke-width:" << 2 * element_stroke
-            << ";stroke-dasharray:" << 3 * element_stroke << " " << 1.5 * element_stroke
-            << "}\n"
-               ".face-mirror{fill:#1f5fa8;fill-opacity:0.12;stroke:#1f5fa8;stroke-width:1}\n"
-               ".face-absorber{fill:#111;fill-opacity:0.35;stroke:#111;stroke-width:1.5}\n"
-            << ".trajectory{fill:none;stroke:#e8730c;stroke-width:" << path_stroke
-            << ";stroke-opacity:0.85;stroke-linejoin:round}\n"
-            << "circle.start{fill:#1a9a3a}\n"
-               ".start-arrow{fill:none;stroke:#1a9a3a;stroke-width:2.5}\n"
-               "path.target{stroke:#d01c1c;stroke-width:2.5}\n"
-               "circle.target{fill:none;stroke:#d01c1c;stroke-width:2}\n"
-               "rect.absorbed{fill:#111}\n"
-               "</style>\n"
-            << "<rect x=\"0\" y=\"" << number_text(-caption_height) << "\" width=\"100%\" "
-            << "height=\"100%\" fill=\"white\"/>\n";
+        const double path_stroke = drawn <= 100     ? 2
+                                   : drawn <= 1000  ? 1.3
+                                   : drawn <= 20000 ? 0.8
+                                                    : 0.4;
+        char style[1024];
+        std::snprintf(
+            style, sizeof style,
+            "<style>\n"
+            "text{font-family:sans-serif;font-size:12px;fill:#222}\n"
+            "text.caption{font-size:14px}\n"
+            "text.title,text.axis{font-size:13px;font-weight:bold}\n"
+            ".frame{fill:none;stroke:#bbb;stroke-width:1}\n"
+            "line.tick{stroke:#888}\n"
+            ".axis-arrow{stroke:#666;stroke-width:1.5}\n"
+            ".mirror{fill:none;stroke:#1f5fa8;stroke-width:%g;stroke-linecap:round}\n"
+            ".absorber{fill:none;stroke:#111;stroke-width:%g;stroke-dasharray:%g %g}\n"
+            ".face-mirror{fill:#1f5fa8;fill-opacity:0.12;stroke:#1f5fa8;stroke-width:1}\n"
+            ".face-absorber{fill:#111;fill-opacity:0.35;stroke:#111;stroke-width:1.5}\n"
+            ".trajectory{fill:none;stroke-width:%g;stroke-opacity:0.9;stroke-linejoin:round;"
+            "stroke-linecap:round}\n"
+            "circle.start{fill:#1a9a3a}\n"
+            ".start-arrow{fill:none;stroke:#1a9a3a;stroke-width:2.5}\n"
+            "path.target{stroke:#d01c1c;stroke-width:2.5}\n"
+            "circle.target{fill:none;stroke:#d01c1c;stroke-width:2}\n"
+            "rect.absorbed{fill:#111}\n"
+            "rect.legend{stroke:none}\n"
+            "</style>\n",
+            element_stroke, 2 * element_stroke, 3 * element_stroke, 1.5 * element_stroke,
+            path_stroke);
+        out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+        SvgWriter svg(out);
+        const std::string height = number_text(page_height + caption_height);
+        svg.open("svg", {{"xmlns", "http://www.w3.org/2000/svg"},
+                         {"width", number_text(page_width)},
+                         {"height", height},
+                         {"viewBox", "0 " + number_text(-caption_height) + " " +
+                                         number_text(page_width) + " " + height}});
+        svg.raw(style);
+        svg.empty("rect", {{"x", "0"},
+                           {"y", number_text(-caption_height)},
+                           {"width", "100%"},
+                           {"height", "100%"},
+                           {"fill", "white"}});
         for (std::size_t i = 0; i < lines.size(); ++i)
-            out << "<text class=\"caption\" x=\"12\" y=\""
-                << number_text(-caption_height + 20 + caption_line * static_cast<double>(i))
-                << "\">" << escape_xml(lines[i]) << "</text>\n";
-        for (std::size_t i = 0; i < views.size(); ++i) write_view(out, views[i], i);
-        out << "</svg>\n";
+            svg.text(
+                "text",
+                {{"class", "caption"},
+                 {"x", "12"},
+                 {"y", number_text(-caption_height + 20 + caption_line * static_cast<double>(i))}},
+                lines[i]);
+        if (fullest_path().bands().size() > 1) write_ramp_key(svg, caption_height);
+        for (std::size_t i = 0; i < views.size(); ++i) write_view(svg, views[i], i);
+        svg.close("svg");
     }
 };
 

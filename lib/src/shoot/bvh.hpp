@@ -35,7 +35,7 @@
 #include <utility>
 #include <vector>
 
-namespace orthoray::lattice {
+namespace orthoray::shoot {
 
 template <class Int, int M>
 class BoundingVolumeHierarchy {
@@ -244,4 +244,4 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const
     }
 }
 
-} // namespace orthoray::lattice
+} // namespace orthoray::shoot

@@ -40,7 +40,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace orthoray::lattice {
+namespace orthoray::shoot {
 
 template <class Int, int M>
 class CrossSectionGrid {
@@ -320,4 +320,4 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
     return shot;
 }
 
-} // namespace orthoray::lattice
+} // namespace orthoray::shoot

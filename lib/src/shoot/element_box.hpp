@@ -7,7 +7,15 @@
 
 #include <cstdint>
 
-namespace orthoray::lattice {
+namespace orthoray::shoot {
+
+// The lattice vocabulary every next-hit structure is written in.
+using lattice::floor_div;
+using lattice::from_integer;
+using lattice::LatticeElement;
+using lattice::LatticeScene;
+using lattice::to_index;
+using lattice::to_integer;
 
 template <class Int, int M>
 struct ElementBox {
@@ -38,4 +46,4 @@ struct ElementBox {
     }
 };
 
-} // namespace orthoray::lattice
+} // namespace orthoray::shoot

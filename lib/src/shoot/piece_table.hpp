@@ -34,7 +34,7 @@
 #include <span>
 #include <vector>
 
-namespace orthoray::lattice {
+namespace orthoray::shoot {
 
 template <class Int>
 class PieceTable {
@@ -401,4 +401,4 @@ void PieceTable<Int>::dump(std::ostream& out) const {
 
 static_assert(sizeof(PieceTable<std::int64_t>::Piece) == 24, "a piece is meant to be 24 bytes");
 
-} // namespace orthoray::lattice
+} // namespace orthoray::shoot

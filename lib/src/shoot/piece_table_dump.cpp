@@ -10,8 +10,8 @@ PieceTableSummary write_piece_tables(const Scene& scene, std::ostream& out) {
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     if (scene.dim != 2 || ls.dim != 2) return summary;
     // GMP integers: a dump is for reading, not for speed.
-    const lattice::UniformGrid<Integer, 2> grid(ls);
-    const auto table = lattice::PieceTable<Integer>::build(ls, grid, ~std::size_t{0});
+    const shoot::UniformGrid<Integer, 2> grid(ls);
+    const auto table = shoot::PieceTable<Integer>::build(ls, grid, ~std::size_t{0});
     summary.available = true;
     summary.mirrors = ls.elements.size();
     summary.pieces = table->size();

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace orthoray::lattice {
+namespace orthoray::shoot {
 
 // What the ray meets next: nothing (escape), or at parameter t > 0 a point
 // where `flip` holds the normal axes of the mirrors met (bit i: active axis i)
@@ -275,4 +275,4 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
     }
 }
 
-} // namespace orthoray::lattice
+} // namespace orthoray::shoot

@@ -56,7 +56,7 @@ struct Solved {
 Solved solve_certified(const Scene& scene, SolveOptions options) {
     std::ostringstream text;
     CertificateWriter writer(text, scene);
-    options.path = &writer;
+    writer.attach(options);
     Solved s{solve(scene, options), ""};
     writer.finish(s.answer);
     s.certificate = text.str();
@@ -81,7 +81,7 @@ void check_same_answer(const Scene& small, const Scene& big) {
     const Solved got = solve_certified(big, capped);
     CHECK(got.answer.reason == expected.reason);
     CHECK(got.answer.reflections == expected.reflections);
-    CHECK(got.answer.arithmetic != "int64"); // the magnitudes are 2^99 and more
+    CHECK(got.answer.arithmetic != ArithmeticUsed::int64); // the magnitudes are 2^99 and more
     std::istringstream in(got.certificate);
     const Verdict verdict = verify_certificate(big, in);
     CHECK(verdict.valid == expected.decided());
@@ -151,13 +151,17 @@ TEST_CASE("the machine-integer choice is right just below and above each limit",
     // c + 5 (c + 7) at scale 1; c puts it one below or at each limit.
     struct Case {
         Integer magnitude;
-        const char* arithmetic;
+        ArithmeticUsed arithmetic;
     };
     const Integer limit64 = lattice::int64_limit(), limit128 = lattice::int128_limit();
     const std::vector<Case> cases = {
-        {limit64 - 1, "int64"},       {limit64, "int128"}, {limit64 + 1, "int128"},
-        {Integer(1) << 63, "int128"}, // past what int64_t holds at all
-        {limit128 - 1, "int128"},     {limit128, "gmp"},   {Integer(1) << 127, "gmp"},
+        {limit64 - 1, ArithmeticUsed::int64},
+        {limit64, ArithmeticUsed::int128},
+        {limit64 + 1, ArithmeticUsed::int128},
+        {Integer(1) << 63, ArithmeticUsed::int128}, // past what int64_t holds at all
+        {limit128 - 1, ArithmeticUsed::int128},
+        {limit128, ArithmeticUsed::gmp},
+        {Integer(1) << 127, ArithmeticUsed::gmp},
     };
     for (const int dim : {2, 3}) {
         for (const bool negative : {false, true}) {
@@ -172,7 +176,7 @@ TEST_CASE("the machine-integer choice is right just below and above each limit",
                 const Rational shift =
                     negative ? Rational(-c.magnitude) : Rational(c.magnitude - largest);
                 const Scene big = transformed(small.scene, {1, 1, 1}, {shift, shift, shift});
-                CAPTURE(dim, negative, c.magnitude.get_str(), c.arithmetic);
+                CAPTURE(dim, negative, c.magnitude.get_str(), to_string(c.arithmetic));
                 REQUIRE(lattice::make_lattice(big).magnitude == c.magnitude);
                 const Solved got = solve_certified(big, {});
                 CHECK(got.answer.arithmetic == c.arithmetic);
@@ -195,9 +199,9 @@ TEST_CASE("long runs at the int64 boundary step exactly like GMP", "[numbers]") 
         SolveOptions wide = narrow;
         wide.arithmetic = Arithmetic::wide;
         const Solved a = solve_certified(scene, narrow), b = solve_certified(scene, wide);
-        CAPTURE(k, a.answer.arithmetic);
-        CHECK(a.answer.arithmetic == (k < 59 ? "int64" : "int128"));
-        CHECK(b.answer.arithmetic == "gmp");
+        CAPTURE(k, to_string(a.answer.arithmetic));
+        CHECK(a.answer.arithmetic == (k < 59 ? ArithmeticUsed::int64 : ArithmeticUsed::int128));
+        CHECK(b.answer.arithmetic == ArithmeticUsed::gmp);
         CHECK(a.answer.reflections == 3000);
         CHECK(a.certificate == b.certificate);
     }

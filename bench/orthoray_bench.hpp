@@ -1,0 +1,39 @@
+// orthoray_bench's parts (bench/README.md): the options its main parses,
+// and one function a part, each printing its markdown tables and returning
+// its failure count.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#ifndef ORTHORAY_BENCH_DIR
+#define ORTHORAY_BENCH_DIR "bench"
+#endif
+
+namespace orthoray::bench {
+
+struct Options {
+    bool quick = false, smoke = false;
+    std::string mode = "all"; // all, throughput, disagree, billion
+    std::string csv;          // throughput table; -disagreement / -billion next to it
+    std::string write_scenes; // a directory to write the benchmark scenes to, as .scene files
+    std::string wrong_scene = std::string(ORTHORAY_BENCH_DIR) + "/float-wrong.scene";
+    int runs = 5;
+    std::uint64_t steps = 0;          // exact and float steps per run (0: by mode)
+    std::uint64_t scenes = 0;         // disagreement scenes (0: by mode)
+    std::uint64_t billion = 0;        // steps of the long run (0: by mode)
+    std::uint64_t reference_work = 0; // reference steps * elements per run (0: by mode)
+};
+
+// Throughput, preprocessing and memory on the benchmark scenes (throughput.cpp).
+int throughput(const Options& o);
+// The long run: peak memory does not grow with the number of reflections.
+int billion(const Options& o);
+// The benchmark scenes as .scene files, for `orthoray solve` and profilers.
+int write_scenes(const std::string& dir);
+// Float against exact on random scenes (disagreement.cpp).
+int disagreements(const Options& o);
+// The ctest bench_smoke check (smoke.cpp): quick, and fails on a real problem.
+int smoke();
+
+} // namespace orthoray::bench

@@ -1,0 +1,108 @@
+// The interval exchange of a 2D scene, as the induction engine builds and
+// induces it (docs/induction.md), for studying, exporting and inducing it
+// without solving.
+//
+// The first-return map of a 2D scene on its mirrors is an integer interval
+// exchange: a bijection T of [0, N) that is a translation on each of k
+// pieces. A state is a lattice point on a mirror with the diagonal direction
+// (DX, DY) the ray leaves it in. Its transverse coordinate
+//
+//     w = DY * Y - DX * X
+//
+// is constant along a segment, and a reflection on the line X = c adds
+// 2 * DX * c, one on Y = c subtracts 2 * DY * c: in w the step map is a pure
+// translation. (A corner negates w; each state that runs into a corner gets
+// a piece of its own.) So every state of one orbit has w in one class modulo
+// G = gcd(2c) over the mirror offsets c, and numbering the states of a line
+// segment in that class by increasing w turns each piece of the piece tables
+// into a translation of consecutive integers.
+#pragma once
+
+#include "orthoray/answer.hpp"
+#include "orthoray/number.hpp"
+#include "orthoray/scene.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace orthoray {
+
+// States on one axis-parallel line segment, with one direction: the points
+// {coordinate axis = offset} x [lo, hi] whose w lies in the orbit's class,
+// numbered 0 .. count - 1 by increasing w. Coordinates are lattice ones
+// (scene coordinate * IntervalExchange::scale).
+struct Transversal {
+    int axis = 0; // 0: the line X = offset, 1: the line Y = offset
+    Integer offset, lo, hi;
+    unsigned negative = 0; // direction bits: bit j set moves towards -infinity on axis j
+    Integer first, count;  // the least position in the class, and how many there are
+    int w_slope = 1;       // w = w_slope * u + constant along the line
+    Integer start;         // raw coordinate of its state number 0
+};
+
+enum class PieceKind : std::uint8_t {
+    reflect,  // the ray reflects at the image state
+    escape,   // the ray meets nothing: the image only closes the exchange
+    absorbed, // the ray stops at an absorber: likewise
+};
+
+// [start, start + length) -> [image, image + length), in rotated coordinates.
+struct ExchangePiece {
+    Integer start, length, image;
+    PieceKind kind = PieceKind::reflect;
+    bool hit = false; // the segment after each of its states passes the target
+};
+
+struct IntervalExchange {
+    Integer scale[2]; // lattice = scene coordinate * scale, per axis
+    Integer modulus;  // G (0: w itself is invariant)
+    std::vector<Transversal> transversals;
+    std::size_t first_transversal = 0; // x, the state after reflection 1:
+    Integer first_index;               // its transversal and number there
+    Integer size;                      // N, the number of states
+    // Rotated so that x is 0, sorted by start; pieces[0] is x alone.
+    std::vector<ExchangePiece> pieces;
+};
+
+// The exchange the induction engine builds for `scene`: nothing unless the
+// scene is 2D, its direction has two nonzero components, the ray reflects at
+// least once, and the piece tables stay within the engine's size cap.
+std::optional<IntervalExchange> exchange_of(const Scene& scene);
+
+// Sees an induction: the exchange, then every step in the words of
+// docs/induction-certificates.md (an accelerated step, a "cycle", is one
+// call). Every callback does nothing unless overridden.
+class InductionObserver {
+public:
+    virtual ~InductionObserver() = default;
+    virtual void begin(const IntervalExchange&) {}
+    virtual void top(std::size_t /*d*/, std::size_t /*r*/) {}
+    virtual void bottom(std::size_t /*r*/, std::size_t /*d*/) {}
+    virtual void equal(std::size_t /*r*/, std::size_t /*d*/) {}
+    virtual void invariant(std::size_t /*d*/) {}
+    virtual void top_cycle(std::size_t /*d*/, const Integer& /*rounds*/) {}
+    virtual void bottom_cycle(std::size_t /*r*/, const Integer& /*rounds*/) {}
+};
+
+// What comes first on the orbit of x.
+enum class ExchangeEvent : std::uint8_t { none, hit, escape, absorbed };
+
+// The orbit of x = 0 as the induction decides it. The event at T^offset(x)
+// happens at the state after reflection offset + 1 of the ray; with no
+// event, the orbit is a cycle of `period` reflections.
+struct InducedOrbit {
+    ExchangeEvent event = ExchangeEvent::none;
+    Integer offset;           // the event happens at T^offset(x)
+    Integer period;           // the return time of x (meaningful without an event)
+    std::uint64_t steps = 0;  // steps taken, an accelerated one counting once
+    std::uint64_t rounds = 0; // of which accelerated
+    ArithmeticUsed arithmetic = ArithmeticUsed::int64; // the integers it ran on
+};
+
+// Rauzy induction with Zorich acceleration on `exchange` (docs/induction.md),
+// calling `observer` (if any) with begin() and then every step.
+InducedOrbit induce(const IntervalExchange& exchange, InductionObserver* observer = nullptr);
+
+} // namespace orthoray
