@@ -106,8 +106,8 @@ TEST_CASE("malformed JSON scenes exit 2 with one FILE:LINE:COL line", "[cli][jso
     const std::string not_scene = dir.write("n.json", "{\"dim\": 2, \"elements\": 3}");
     const CliResult r = run_cli("solve " + quote(not_scene));
     require_bad_input(r);
-    CHECK(r.err == not_scene + ":1:24: found the number 3, expected an array of mirrors and "
-                               "absorbers\n");
+    CHECK(r.err == not_scene + ":1:24: found the number 3, expected an array of mirrors, "
+                               "absorbers and splitters\n");
 }
 
 TEST_CASE("JSON Lines certificates verify, and tampered ones do not", "[cli][jsonl]") {

@@ -116,7 +116,10 @@ pid_t start_solve(const std::string& scene, const std::string& cert, const std::
 // is stepping once either has content.
 bool stepping(const std::string& cert) {
     const fs::path path(cert);
-    const std::string partial = "." + path.filename().string() + ".partial";
+    // Appended, not concatenated: GCC 12 warns falsely (-Wrestrict) on
+    // "." + string + "...".
+    std::string partial = ".";
+    partial.append(path.filename().string()).append(".partial");
     return wait_until([&] {
         std::error_code ignored;
         for (const auto& entry : fs::directory_iterator(path.parent_path(), ignored)) {

@@ -168,7 +168,7 @@ TEST_CASE("valid JSON that is not a scene is reported at the value at fault", "[
          "t.json:2:10: found the string \"2\", expected the dimension 2 or 3"},
         {edit("\"dim\": 2,", "\"dim\": 2, \"mirrors\": [],"),
          "t.json:2:13: found the key \"mirrors\", expected one of \"dim\", \"elements\", \"ray\", "
-         "\"target\""},
+         "\"rays\", \"target\", \"targets\""},
         {edit("\"dim\": 2,", "\"dim\": 2, \"dim\": 3,"),
          "t.json:2:13: found a second key \"dim\" (the first is on line 2), expected each key "
          "once"},
@@ -185,7 +185,8 @@ TEST_CASE("valid JSON that is not a scene is reported at the value at fault", "[
          "t.json:4:32: found the string \"z\", expected the normal axis \"x\" or \"y\" of a 2D "
          "scene"},
         {edit("\"kind\": \"mirror\"", "\"kind\": \"lens\""),
-         "t.json:4:14: found the string \"lens\", expected \"mirror\" or \"absorber\""},
+         "t.json:4:14: found the string \"lens\", expected \"mirror\", "
+         "\"absorber\" or \"splitter\""},
         {edit("[\"0\", \"5\"]", "[\"5\", \"0\"]"),
          "t.json:4:74: found the string \"0\" as the upper end of the y extent, expected a "
          "number greater than 5"},
@@ -201,7 +202,8 @@ TEST_CASE("valid JSON that is not a scene is reported at the value at fault", "[
          "t.json:8:13: found an array of 1 values, expected the target point as an array of 2 "
          "rationals"},
         {edit(",\n  \"target\": [\"7/2\", \"1\"]", ""),
-         "t.json:1:1: found an object without \"target\", expected \"target\": the target point"},
+         "t.json:1:1: found an object without \"target\", expected \"target\": a target "
+         "point or \"targets\": [...]"},
         {std::string(100, '[') + std::string(100, ']'),
          "t.json:1:65: found JSON nested more than 64 levels deep, expected a flatter document"},
     };
@@ -209,4 +211,53 @@ TEST_CASE("valid JSON that is not a scene is reported at the value at fault", "[
         INFO(c.text);
         CHECK(std::string(error_of(c.text).what()) == c.message);
     }
+}
+
+TEST_CASE("JSON scenes carry splitters, sides and several rays and targets", "[json][optics]") {
+    const Scene s = read_scene("dim 3\nsplitter z- 0 x 0 4 y 0 4\nmirror x+ 1 y 0 1 z 0 1\n"
+                               "absorber y 2 x 0 1 z 0 1\nray 0 0 0 1 1 1\nray 1 2 3 -1 0 0\n"
+                               "target 1 1 1\ntarget 2 2 2\n");
+    const std::string json = write_scene_json(s);
+    CHECK(json.find("\"kind\": \"splitter\", \"axis\": \"z\", \"side\": \"-\"") !=
+          std::string::npos);
+    CHECK(json.find("\"rays\": [") != std::string::npos);
+    CHECK(json.find("\"targets\": [") != std::string::npos);
+    const Scene back = read_scene_json(json);
+    CHECK(write_scene(back) == write_scene(s));
+    // One ray and one target keep the single forms that older readers know.
+    Scene single = s;
+    single.rays.resize(1);
+    single.targets.resize(1);
+    const std::string single_json = write_scene_json(single);
+    CHECK(single_json.find("\"ray\": {") != std::string::npos);
+    CHECK(single_json.find("\"target\": [") != std::string::npos);
+    CHECK(write_scene(read_scene_json(single_json)) == write_scene(single));
+}
+
+TEST_CASE("bad sides, ray lists and target lists are one located error", "[json][optics]") {
+    const std::string head = "{\"dim\": 2, \"elements\": [";
+    const std::string mirror = "{\"kind\": \"mirror\", \"axis\": \"x\", \"offset\": \"1\", "
+                               "\"extent\": {\"y\": [\"0\", \"1\"]}";
+    const std::string tail = "\"ray\": {\"start\": [\"0\", \"0\"], \"direction\": [\"1\", \"0\"]}, "
+                             "\"target\": [\"1\", \"1\"]}";
+    auto message = [](const std::string& text) {
+        try {
+            read_scene_json(text, "t.json");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK(message(head + mirror + ", \"side\": \"+-\"}], " + tail) ==
+          "t.json:1:109: found the string \"+-\", expected the side \"+\" or \"-\" (no \"side\": "
+          "two-sided)");
+    CHECK(message(head + "], \"rays\": [], \"target\": [\"1\", \"1\"]}") ==
+          "t.json:1:36: found an empty array, expected a nonempty array of {\"start\": [...], "
+          "\"direction\": [...]}");
+    CHECK(message(head + "], \"target\": [\"1\", \"1\"]}")
+              .rfind("t.json:1:1: found an object "
+                     "without \"ray\"",
+                     0) == 0);
+    CHECK(message(head + "], " + tail.substr(0, tail.size() - 1) + ", \"targets\": []}")
+              .find("found both \"target\" and \"targets\"") != std::string::npos);
 }

@@ -46,7 +46,8 @@ struct Answer {
     // hit: reflections strictly before the ray first reaches the target;
     // escape/absorbed: reflections before it leaves or stops; cycle: tail +
     // period (the cycle's start plus one period, docs/optics.md); limit:
-    // reflections performed. Unused for the illumination question.
+    // reflections performed. The illumination question: the most of the lit
+    // targets' least reflections (what lighting all of them so far takes).
     Integer reflections;
     // cycle: reflections before the trajectory enters its cycle (0 when it
     // is purely periodic, as it always is without one-sided elements); the

@@ -30,4 +30,12 @@ struct StateGraphReport {
 std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uint64_t max_states,
                                                     RunMonitor* monitor = nullptr);
 
+// The illumination question (docs/optics.md) on the graph of the states
+// reachable from the rays, one out-edge per outgoing direction: lit or
+// unlit by breadth-first search, the least reflections by Dijkstra on 0/1
+// weights. std::nullopt when more than max_states states are reachable; a
+// monitor's limit gives Reason::limit with every target unknown.
+std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64_t max_states,
+                                                 RunMonitor* monitor = nullptr);
+
 } // namespace orthoray

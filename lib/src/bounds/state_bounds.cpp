@@ -69,6 +69,9 @@ std::optional<Integer> states_visited(const Answer& answer) {
         return answer.reflections;
     case Reason::absorbed:
         return Integer(answer.reflections + 1);
+    case Reason::lit:
+    case Reason::unlit:
+        return answer.states;
     case Reason::limit:
         return std::nullopt;
     }

@@ -189,6 +189,9 @@ void CertificateWriter::finish(const Answer& answer) {
         break;
     case Reason::absorbed:
         break;
+    case Reason::lit: // solve() refuses to write certificates for illumination
+    case Reason::unlit:
+        break;
     }
     out_ << (json ? "}\n{\"end\": true}\n" : "end\n");
     out_.flush();

@@ -1,9 +1,14 @@
 // One step of the reference tracer: the spec's motion rule read literally,
-// in rationals, scanning every element (O(n) per step). It is the oracle the
+// in rationals, scanning every element (O(n) per step). Only elements that
+// act on the ray (docs/optics.md: not parallel, not seen from their back)
+// make events. It is the oracle the
 // tests hold the fast engine to, so it is kept as plain as possible.
 #pragma once
 
+#include "engine/event_rule.hpp"
 #include "orthoray/scene.hpp"
+
+#include <vector>
 
 namespace orthoray::engine {
 
@@ -12,7 +17,10 @@ struct ReferenceEvent {
     bool absorbed = false; // an absorber is met at `point`
     Rational t;            // parameter of `point` along p + t v
     Vector point;
-    Vector direction; // the direction after reflecting at `point`
+    Vector direction; // the first of `outgoing` (the only one without splitters)
+    // Every direction leaving `point` (docs/optics.md); empty on escape or
+    // absorption.
+    std::vector<Outgoing> outgoing;
 };
 
 ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v);

@@ -1,6 +1,7 @@
 #include "engine/reference_tracer.hpp"
 
 #include "engine/cycle_detector.hpp"
+#include "engine/event_rule.hpp"
 #include "engine/reference_step.hpp"
 
 #include <chrono>
@@ -10,10 +11,10 @@ namespace orthoray::engine {
 
 ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v) {
     ReferenceEvent event;
-    std::array<bool, 3> flip{};
+    std::vector<const Element*> acting;
     for (const Element& e : scene.elements) {
         const int k = e.axis;
-        if (v[k] == 0) continue; // parallel to the element's plane: never met
+        if (!acts_on(e, v)) continue; // invisible to this ray (parallel, or its back)
         Rational t = (e.offset() - p[k]) / v[k];
         if (t <= 0) continue;
         if (!event.escape && event.t < t) continue;
@@ -29,16 +30,16 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
             event.escape = false;
             event.t = t;
             event.point = q;
-            flip = {};
+            acting.clear();
         }
-        if (e.kind == ElementKind::absorber)
-            event.absorbed = true;
-        else
-            flip[k] = true;
+        acting.push_back(&e);
     }
     event.direction = v;
-    for (int j = 0; j < scene.dim; ++j)
-        if (flip[j]) event.direction[j] = -v[j];
+    if (event.escape) return event;
+    EventOutcome outcome = event_outcome(scene.dim, acting, v);
+    event.absorbed = outcome.absorbed;
+    event.outgoing = std::move(outcome.outgoing);
+    if (!event.absorbed) event.direction = event.outgoing.front().direction;
     return event;
 }
 
@@ -67,6 +68,28 @@ struct RationalState {
     bool operator==(const RationalState&) const = default;
 };
 
+// The state after the next event; only called on states of a trajectory
+// known to be periodic, which therefore never escapes nor stops.
+RationalState next_state(const Scene& scene, const RationalState& s) {
+    const ReferenceEvent e = reference_step(scene, s.p, s.v);
+    return {e.point, e.direction};
+}
+
+// mu of docs/optics.md: the least i >= 1 with s_i = s_{i + lambda}, found
+// by walking s_i and s_{i + lambda} side by side from i = 1 (the second pass
+// of Brent's and Floyd's methods). O(1) states are kept.
+std::uint64_t cycle_start(const Scene& scene, const RationalState& first, std::uint64_t lambda) {
+    RationalState behind = first, ahead = first;
+    for (std::uint64_t i = 0; i < lambda; ++i) ahead = next_state(scene, ahead);
+    std::uint64_t mu = 1;
+    while (!(behind == ahead)) {
+        behind = next_state(scene, behind);
+        ahead = next_state(scene, ahead);
+        ++mu;
+    }
+    return mu;
+}
+
 template <class Detector>
 Answer trace(const Scene& scene, const SolveOptions& options) {
     Answer answer;
@@ -77,7 +100,7 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
         answer.reflections = Integer(static_cast<unsigned long>(reflections));
         return answer;
     };
-    RationalState s{scene.ray().start, scene.ray().direction};
+    RationalState s{scene.ray().start, scene.ray().direction}, first;
     if (options.path) options.path->visit(s.p, s.v);
     Detector detector;
     // A reflection costs a scan of every element, so the monitor is polled
@@ -107,8 +130,15 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
             s = {e.point, e.direction};
             ++reflections;
             if (options.path) options.path->visit(s.p, s.v);
-            if (auto period = detector.observe(s, reflections))
-                return finish(Reason::cycle, *period);
+            if (reflections == 1) first = s;
+            if (auto period = detector.observe(s, reflections)) {
+                // Without one-sided elements the step map is injective and
+                // the trajectory purely periodic (tail 0, semantics.md).
+                if (!scene.has_one_sided()) return finish(Reason::cycle, *period);
+                const std::uint64_t tail = cycle_start(scene, first, *period) - 1;
+                answer.tail = Integer(static_cast<unsigned long>(tail));
+                return finish(Reason::cycle, tail + *period);
+            }
         }
     } catch (const std::bad_alloc&) {
         answer.limit = Limit::memory;
@@ -119,7 +149,10 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
 } // namespace
 
 Answer solve_by_reference(const Scene& scene, const SolveOptions& options) {
-    if (options.cycle_detector == CycleDetector::brent)
+    // One-sided elements make the step map non-injective: a trajectory may
+    // enter its cycle after a tail and never see its first state again, so
+    // the first-state detector would loop forever. Brent's is forced.
+    if (options.cycle_detector == CycleDetector::brent || scene.has_one_sided())
         return trace<BrentDetector<RationalState>>(scene, options);
     return trace<FirstStateDetector<RationalState>>(scene, options);
 }

@@ -1,6 +1,7 @@
 // solve(): picks the engine the options ask for.
 #include "orthoray/solve.hpp"
 
+#include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_tracer.hpp"
 #include "orthoray/state_graph.hpp"
@@ -42,15 +43,38 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     return answer;
 }
 
+// The illumination question on the explicit graph of reachable states; a
+// scene with too many of them is a memory limit with every target unknown.
+Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& options) {
+    try {
+        if (std::optional<Answer> answer =
+                explore_illumination_graph(scene, options.max_graph_states, options.monitor))
+            return *answer;
+    } catch (const std::bad_alloc&) {
+    }
+    Answer answer;
+    answer.engine = EngineUsed::graph;
+    answer.arithmetic = ArithmeticUsed::rational;
+    answer.limit = Limit::memory;
+    answer.targets.assign(scene.targets.size(), TargetAnswer{});
+    return answer;
+}
+
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // The illumination engine (several rays or targets, splitters) and
-    // one-sided elements are being built (issue 12); until then such scenes
-    // are refused rather than answered by rules that ignore them.
-    if (!scene.single_trajectory() || scene.has_one_sided())
-        throw std::invalid_argument(
-            "splitters, one-sided elements and several rays or targets are not decided yet");
+    // The illumination question (several rays or targets, splitters) and
+    // one-sided elements (a non-injective step map) are decided by the
+    // reference tracer (the illumination question also by the state graph
+    // when asked for): the lattice and induction engines assume two-sided
+    // mirrors and one trajectory. The answer's engine says which ran.
+    if (options.path && (!scene.single_trajectory() || scene.has_one_sided()))
+        throw std::invalid_argument("certificates for scenes with splitters, one-sided elements "
+                                    "or several rays or targets are not supported yet");
+    if (!scene.single_trajectory())
+        return options.engine == Engine::graph ? solve_illumination_by_graph(scene, options)
+                                               : engine::solve_illumination(scene, options);
+    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
     switch (options.engine) {
     case Engine::reference:
         return engine::solve_by_reference(scene, options);

@@ -7,6 +7,7 @@
 #include "io/json_document.hpp"
 
 #include <string>
+#include <vector>
 
 namespace orthoray {
 namespace {
@@ -21,32 +22,71 @@ public:
 
     Scene read(const JsonValue& root) {
         expect_type(root, JsonValue::Type::object, "a scene object {\"dim\": ..., ...}");
-        check_keys(root, {"dim", "elements", "ray", "target"});
+        check_keys(root, {"dim", "elements", "ray", "rays", "target", "targets"});
         const JsonValue& dim = member(root, "dim", "the dimension 2 or 3");
         if (dim.type != JsonValue::Type::number || (dim.text != "2" && dim.text != "3"))
             fail(dim, "found " + io::describe(dim) + ", expected the dimension 2 or 3");
         scene_.dim = dim.text[0] - '0';
 
-        const JsonValue& elements = member(root, "elements", "an array of mirrors and absorbers");
-        expect_type(elements, JsonValue::Type::array, "an array of mirrors and absorbers");
+        const JsonValue& elements =
+            member(root, "elements", "an array of mirrors, absorbers and splitters");
+        expect_type(elements, JsonValue::Type::array,
+                    "an array of mirrors, absorbers and splitters");
         scene_.elements.reserve(elements.items.size());
         for (const JsonValue& e : elements.items) read_element(e);
 
-        const JsonValue& ray = member(root, "ray", "{\"start\": [...], \"direction\": [...]}");
-        expect_type(ray, JsonValue::Type::object, "{\"start\": [...], \"direction\": [...]}");
-        check_keys(ray, {"start", "direction"});
-        scene_.ray().start = point(member(ray, "start", "the start point"), "the start point");
-        const JsonValue& direction = member(ray, "direction", "the direction");
-        scene_.ray().direction = point(direction, "the direction");
-        bool zero = true;
-        for (int j = 0; j < scene_.dim; ++j) zero = zero && scene_.ray().direction[j] == 0;
-        if (zero) fail(direction, "found the direction 0, expected a nonzero direction");
-
-        scene_.target() = point(member(root, "target", "the target point"), "the target point");
+        // One ray as "ray", or several as "rays"; the same for targets.
+        scene_.rays.clear();
+        for (const JsonValue* ray : one_or_many(root, "ray", "rays", ray_form))
+            scene_.rays.push_back(read_ray(*ray));
+        scene_.targets.clear();
+        for (const JsonValue* target : one_or_many(root, "target", "targets", "a target point"))
+            scene_.targets.push_back(point(*target, "the target point"));
         return std::move(scene_);
     }
 
 private:
+    static constexpr const char* ray_form = "{\"start\": [...], \"direction\": [...]}";
+
+    // The value of `single`, or the items of `several` (a nonempty array);
+    // exactly one of the two keys must be there.
+    std::vector<const JsonValue*> one_or_many(const JsonValue& root, std::string_view single,
+                                              std::string_view several,
+                                              const std::string& what) const {
+        const JsonValue* one = root.find(single);
+        const JsonValue* many = root.find(several);
+        const std::string one_key = io::json_quoted(std::string(single));
+        const std::string many_key = io::json_quoted(std::string(several));
+        if (one && many)
+            fail(*many, "found both " + one_key + " and " + many_key + ", expected one of them");
+        if (one) return {one};
+        if (!many)
+            fail(root, "found an object without " + one_key + ", expected " + one_key + ": " +
+                           what + " or " + many_key + ": [...]");
+        if (many->type != JsonValue::Type::array || many->items.empty())
+            fail(*many, "found " +
+                            (many->type == JsonValue::Type::array ? std::string("an empty array")
+                                                                  : io::describe(*many)) +
+                            ", expected a nonempty array of " + what);
+        std::vector<const JsonValue*> items;
+        for (const JsonValue& item : many->items) items.push_back(&item);
+        return items;
+    }
+
+    Ray read_ray(const JsonValue& ray) const {
+        expect_type(ray, JsonValue::Type::object, ray_form);
+        check_keys(ray, {"start", "direction"});
+        Ray r;
+        r.line = ray.line;
+        r.start = point(member(ray, "start", "the start point"), "the start point");
+        const JsonValue& direction = member(ray, "direction", "the direction");
+        r.direction = point(direction, "the direction");
+        bool zero = true;
+        for (int j = 0; j < scene_.dim; ++j) zero = zero && r.direction[j] == 0;
+        if (zero) fail(direction, "found the direction 0, expected a nonzero direction");
+        return r;
+    }
+
     [[noreturn]] void fail(int line, int column, const std::string& message) const {
         throw InputError(file_, line, column, message);
     }
@@ -131,16 +171,29 @@ private:
     void read_element(const JsonValue& value) {
         expect_type(value, JsonValue::Type::object,
                     "an element {\"kind\": ..., \"axis\": ..., \"offset\": ..., \"extent\": ...}");
-        check_keys(value, {"kind", "axis", "offset", "extent"});
+        check_keys(value, {"kind", "axis", "side", "offset", "extent"});
         Element e;
         e.line = value.line;
-        const JsonValue& kind = member(value, "kind", "\"mirror\" or \"absorber\"");
+        const char* kinds = "\"mirror\", \"absorber\" or \"splitter\"";
+        const JsonValue& kind = member(value, "kind", kinds);
         if (kind.type == JsonValue::Type::string && kind.text == "mirror")
             e.kind = ElementKind::mirror;
         else if (kind.type == JsonValue::Type::string && kind.text == "absorber")
             e.kind = ElementKind::absorber;
+        else if (kind.type == JsonValue::Type::string && kind.text == "splitter")
+            e.kind = ElementKind::splitter;
         else
-            fail(kind, "found " + io::describe(kind) + ", expected \"mirror\" or \"absorber\"");
+            fail(kind, "found " + io::describe(kind) + ", expected " + kinds);
+        // No "side": two-sided. "+" or "-": one-sided (docs/optics.md).
+        if (const JsonValue* side = value.find("side")) {
+            if (side->type == JsonValue::Type::string && side->text == "+")
+                e.side = Side::plus;
+            else if (side->type == JsonValue::Type::string && side->text == "-")
+                e.side = Side::minus;
+            else
+                fail(*side, "found " + io::describe(*side) +
+                                ", expected the side \"+\" or \"-\" (no \"side\": two-sided)");
+        }
         e.axis = axis_of(member(value, "axis", "the normal axis"));
         const std::string normal(1, axis_name(e.axis));
         e.lo[e.axis] = e.hi[e.axis] =

@@ -21,10 +21,10 @@ std::string write_scene_json(const Scene& scene) {
     out << "{\n  \"dim\": " << scene.dim << ",\n  \"elements\": [";
     for (std::size_t i = 0; i < scene.elements.size(); ++i) {
         const Element& e = scene.elements[i];
-        out << (i ? ",\n" : "\n") << "    {\"kind\": \""
-            << (e.kind == ElementKind::mirror ? "mirror" : "absorber") << "\", \"axis\": \""
-            << axis_name(e.axis) << "\", \"offset\": \"" << to_string(e.offset())
-            << "\", \"extent\": {";
+        out << (i ? ",\n" : "\n") << "    {\"kind\": \"" << to_string(e.kind) << "\", \"axis\": \""
+            << axis_name(e.axis) << '"';
+        if (e.one_sided()) out << ", \"side\": \"" << side_sign(e.side) << '"';
+        out << ", \"offset\": \"" << to_string(e.offset()) << "\", \"extent\": {";
         bool first = true;
         for (int j = 0; j < scene.dim; ++j) {
             if (j == e.axis) continue;
@@ -34,12 +34,37 @@ std::string write_scene_json(const Scene& scene) {
         }
         out << "}}";
     }
-    out << (scene.elements.empty() ? "],\n" : "\n  ],\n") << "  \"ray\": {\"start\": ";
-    write_point(out, scene.ray().start, scene.dim);
-    out << ", \"direction\": ";
-    write_point(out, scene.ray().direction, scene.dim);
-    out << "},\n  \"target\": ";
-    write_point(out, scene.target(), scene.dim);
+    out << (scene.elements.empty() ? "],\n" : "\n  ],\n");
+    // One ray or target in the single form, several as an array.
+    auto write_ray = [&](const Ray& ray) {
+        out << "{\"start\": ";
+        write_point(out, ray.start, scene.dim);
+        out << ", \"direction\": ";
+        write_point(out, ray.direction, scene.dim);
+        out << '}';
+    };
+    if (scene.rays.size() == 1) {
+        out << "  \"ray\": ";
+        write_ray(scene.ray());
+    } else {
+        out << "  \"rays\": [";
+        for (std::size_t r = 0; r < scene.rays.size(); ++r) {
+            out << (r ? ",\n    " : "\n    ");
+            write_ray(scene.rays[r]);
+        }
+        out << "\n  ]";
+    }
+    if (scene.targets.size() == 1) {
+        out << ",\n  \"target\": ";
+        write_point(out, scene.target(), scene.dim);
+    } else {
+        out << ",\n  \"targets\": [";
+        for (std::size_t t = 0; t < scene.targets.size(); ++t) {
+            out << (t ? ",\n    " : "\n    ");
+            write_point(out, scene.targets[t], scene.dim);
+        }
+        out << "\n  ]";
+    }
     out << "\n}\n";
     return out.str();
 }

@@ -1,0 +1,38 @@
+// The acting rule of docs/optics.md in one place: which elements act on a
+// ray at an event point, whether an absorber stops it, and which directions
+// leave the point. Every engine that knows splitters or one-sided elements
+// asks this file, so the rule cannot drift between them.
+#pragma once
+
+#include "orthoray/scene.hpp"
+
+#include <vector>
+
+namespace orthoray::engine {
+
+// Whether `element` acts on a ray moving along v at a point that lies on it:
+// the ray is not parallel to the element's plane, and the element is
+// two-sided or its sign names the side the ray arrives from.
+bool acts_on(const Element& element, const Vector& v);
+
+// One direction leaving an event point.
+struct Outgoing {
+    Vector direction;
+    bool reflection = false; // the direction changed (a pass-through is not one)
+};
+
+struct EventOutcome {
+    bool absorbed = false;
+    // Empty when absorbed. Otherwise v with the components of F negated, for
+    // every F with R <= F <= R + S (R: axes where a mirror acts, S: axes
+    // where only splitters act); the first entry is F = R, the ray's only
+    // way on when no splitter acts.
+    std::vector<Outgoing> outgoing;
+};
+
+// The outcome for a ray moving along v at a point where `acting` are the
+// elements that act on it (the caller has checked that the point lies on
+// each and that acts_on holds). `dim` is the scene's dimension.
+EventOutcome event_outcome(int dim, const std::vector<const Element*>& acting, const Vector& v);
+
+} // namespace orthoray::engine
