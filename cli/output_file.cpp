@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <iostream>
+#include <poll.h>
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -184,11 +185,25 @@ void remove_unfinished_output() noexcept {
         if (unfinished_used[i]) ::unlink(unfinished_path[i]);
 }
 
+// The error of a write to standard output that failed earlier, inside the
+// stream's buffering, after which errno was overwritten: a pipe or socket
+// whose reader is gone reports POLLERR on poll(2), which is the broken pipe
+// (EPIPE) that write(2) gave then. 0 when it cannot be told.
+int earlier_stdout_error() {
+    struct stat info {};
+    if (::fstat(STDOUT_FILENO, &info) != 0) return errno;
+    if (!S_ISFIFO(info.st_mode) && !S_ISSOCK(info.st_mode)) return 0;
+    pollfd out{STDOUT_FILENO, POLLOUT, 0};
+    if (::poll(&out, 1, 0) == 1 && (out.revents & POLLERR)) return EPIPE;
+    return 0;
+}
+
 void finish_standard_output() {
     errno = 0;
     const bool flushed = std::fflush(stdout) == 0;
-    const int error = errno;
+    int error = errno;
     if (flushed && !std::ferror(stdout) && std::cout.good()) return;
+    if (error == 0) error = earlier_stdout_error();
     throw WriteError(std::string("cannot write to standard output: ") +
                      (error ? reason(error) : "a write failed"));
 }
