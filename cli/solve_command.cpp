@@ -193,15 +193,27 @@ int run(const SolveArgs& args, const CLI::Option* max_steps, const CLI::Option* 
         if (!answer.decided()) return limit;
         return answer.yes() ? yes : no;
     };
+    std::optional<std::chrono::steady_clock::time_point> deadline;
+    if (args.timeout > 0)
+        deadline = begin_command + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                       std::chrono::duration<double>(args.timeout));
+    auto past_deadline = [&] { return deadline && std::chrono::steady_clock::now() >= *deadline; };
     Scene scene;
     try {
+        // Parsing huge numbers takes a while: a signal or the deadline stops
+        // it between numbers, with nothing proven yet.
+        const ReadStopCheck stop_check(
+            args.file, [&] { return InterruptGuard::requested() || past_deadline(); });
         scene =
             load_scene(args.file,
                        scene_format_named(args.format)); // bad input ends here, before any output
     } catch (const std::bad_alloc&) {
         return report(stopped_before_solving(Limit::memory), 0);
     } catch (const ReadInterrupted&) {
-        return report(stopped_before_solving(Limit::interrupt), 0);
+        return report(stopped_before_solving(InterruptGuard::requested() || !past_deadline()
+                                                 ? Limit::interrupt
+                                                 : Limit::time),
+                      0);
     }
     refuse_unsupported_certificate(scene, args);
     SolveOptions options;
@@ -210,10 +222,6 @@ int run(const SolveArgs& args, const CLI::Option* max_steps, const CLI::Option* 
     options.arithmetic = arithmetics.at(args.arithmetic);
     options.shooter = shooters.at(args.shooter);
     if (max_steps->count() > 0) options.max_steps = args.max_steps;
-    std::optional<std::chrono::steady_clock::time_point> deadline;
-    if (args.timeout > 0)
-        deadline = begin_command + std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                       std::chrono::duration<double>(args.timeout));
     SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph);
     options.monitor = &monitor;
 

@@ -81,6 +81,21 @@ TEST_CASE("SIGTERM during setup on 10^6-digit sides: exit 3, interrupt", "[stop_
     CHECK(j["limit"] == "interrupt");
 }
 
+TEST_CASE("--timeout while the scene's huge numbers are parsed stops the parse",
+          "[stop_requests][cli]") {
+    // Converting the twelve 10^6-digit numbers takes about 0.3 s; a deadline
+    // at 50 ms falls inside, so the run stops before any engine is chosen
+    // (arithmetic none). Polling only after the read would report gmp.
+    const TempDir dir;
+    const std::string scene = big_box(dir, 1'000'000);
+    const CliResult run = run_cli("solve --json --timeout 0.05 " + quote(scene));
+    CHECK(run.status == 3);
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    CHECK(j["limit"] == "time");
+    CHECK(j["reflections"] == 0);
+    CHECK(j["arithmetic"] == "none");
+}
+
 TEST_CASE("the default engine on GMP-sized boxes switches to induction after steps of equal cost",
           "[stop_requests]") {
     // Before a step's cost counted, the 2^4000 box stepped 2 k (bits + 8),

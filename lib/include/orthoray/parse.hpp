@@ -5,6 +5,7 @@
 #include "orthoray/scene.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <istream>
 #include <memory>
 #include <stdexcept>
@@ -49,6 +50,28 @@ constexpr std::size_t input_cap_bytes = std::size_t{256} << 20;
 class ReadInterrupted : public std::runtime_error {
 public:
     explicit ReadInterrupted(const std::string& path);
+};
+
+// Parsing a huge scene takes a while after the bytes are in (converting a
+// 10^6-digit decimal to binary takes tens of milliseconds, and a capped file
+// holds millions of statements). While a ReadStopCheck lives on a thread,
+// the scene readers on that thread ask it before every number they convert
+// and throw ReadInterrupted for `path` once it answers true, so a stop
+// request is seen within one number's conversion. The command line sets
+// one; without it reading is never interrupted.
+class ReadStopCheck {
+public:
+    ReadStopCheck(std::string path, std::function<bool()> stop_requested);
+    ~ReadStopCheck();
+    ReadStopCheck(const ReadStopCheck&) = delete;
+    ReadStopCheck& operator=(const ReadStopCheck&) = delete;
+    // Throws ReadInterrupted when the innermost check on this thread says so.
+    static void poll();
+
+private:
+    std::string path_;
+    std::function<bool()> stop_requested_;
+    ReadStopCheck* outer_;
 };
 
 // Reads a whole file, at most input_cap_bytes. Throws InputError for a

@@ -84,6 +84,24 @@ private:
 ReadInterrupted::ReadInterrupted(const std::string& path)
     : std::runtime_error("interrupted while reading '" + path + "'") {}
 
+namespace {
+thread_local ReadStopCheck* innermost_check = nullptr;
+} // namespace
+
+ReadStopCheck::ReadStopCheck(std::string path, std::function<bool()> stop_requested)
+    : path_(std::move(path)), stop_requested_(std::move(stop_requested)), outer_(innermost_check) {
+    innermost_check = this;
+}
+
+ReadStopCheck::~ReadStopCheck() {
+    innermost_check = outer_;
+}
+
+void ReadStopCheck::poll() {
+    if (innermost_check && innermost_check->stop_requested_())
+        throw ReadInterrupted(innermost_check->path_);
+}
+
 std::string read_file(const std::string& path) {
     const int fd = open_for_reading(path);
     struct Close {

@@ -135,6 +135,7 @@ private:
         if (value.type != JsonValue::Type::string)
             fail(value,
                  "found " + io::describe(value) + ", expected " + what + ": " + rational_forms);
+        ReadStopCheck::poll();
         NumberToken n = read_number(value.text);
         if (n.status == NumberToken::Status::zero_denominator)
             fail(value, "found " + io::describe(value) + ", expected " + what +

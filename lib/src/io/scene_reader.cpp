@@ -140,6 +140,7 @@ private:
 
     Rational take_number(const std::string& what) {
         const Token& t = take(what);
+        ReadStopCheck::poll();
         NumberToken n = read_number(t.text);
         if (n.status == NumberToken::Status::zero_denominator)
             fail(t.column,
