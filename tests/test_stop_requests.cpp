@@ -81,7 +81,7 @@ TEST_CASE("SIGTERM during setup on 10^6-digit sides: exit 3, interrupt", "[stop_
     CHECK(j["limit"] == "interrupt");
 }
 
-TEST_CASE("--timeout while the scene's huge numbers are parsed stops the parse",
+TEST_CASE("a --timeout while the scene's huge numbers are parsed stops the parse",
           "[stop_requests][cli]") {
     // Converting the twelve 10^6-digit numbers takes about 0.3 s; a deadline
     // at 50 ms falls inside, so the run stops before any engine is chosen
