@@ -18,9 +18,15 @@ int clamp_int(long long value) {
 // can hold several (the header holds the version and dim, the verdict holds
 // answer, reason, reflections and the reason's own values), and the order
 // of keys inside the object does not matter.
-// The induction statements (docs/induction-certificates.md) come one a line.
+// The induction statements (docs/induction-certificates.md) and the
+// illumination statements (branch, lit, step, unlit, unknown) come one a line.
 constexpr std::string_view json_keywords[] = {"orthoray-certificate",
                                               "dim",
+                                              "illumination",
+                                              "branch",
+                                              "lit",
+                                              "unlit",
+                                              "unknown",
                                               "point",
                                               "method",
                                               "scale",
@@ -36,8 +42,91 @@ constexpr std::string_view json_keywords[] = {"orthoray-certificate",
                                               "direction",
                                               "state",
                                               "period",
+                                              "tail",
+                                              "states",
                                               "partial",
                                               "end"};
+
+// A statement whose JSON value is an object: its keys, in the order their
+// values become operands. A `labelled` key also becomes a token itself, as
+// the text format writes that word before the value (`branch X V ray R
+// reflections K`), so both formats give the same statement.
+struct ObjectPart {
+    std::string_view key;
+    bool labelled;
+};
+struct ObjectForm {
+    std::string_view keyword;
+    std::vector<ObjectPart> parts;
+};
+
+const std::vector<ObjectForm>& object_forms() {
+    static const std::vector<ObjectForm> forms = {
+        {"state", {{"point", false}, {"direction", false}}},
+        {"step", {{"point", false}, {"direction", false}}},
+        {"branch", {{"point", false}, {"direction", false}, {"ray", true}, {"reflections", true}}},
+        {"lit", {{"target", false}, {"reflections", true}, {"ray", true}}},
+    };
+    return forms;
+}
+
+const ObjectForm* object_form(std::string_view keyword) {
+    for (const ObjectForm& form : object_forms())
+        if (form.keyword == keyword) return &form;
+    return nullptr;
+}
+
+// A JSON value as an operand token: scalars by their text, containers by a
+// placeholder that no operand check accepts.
+using Token = CertificateReader::Token;
+
+Token operand(const io::JsonValue& v) {
+    switch (v.type) {
+    case io::JsonValue::Type::array:
+        return {"[...]", v.column};
+    case io::JsonValue::Type::object:
+        return {"{...}", v.column};
+    default:
+        return {v.text, v.column};
+    }
+}
+
+// The operands of an object value, in the order of its form; a key the
+// form does not name, or named twice, is bad input. A missing key leaves
+// its operands out, so the statement's own check reports what is missing.
+void object_operands(const io::JsonValue& value, const ObjectForm& form, const std::string& name,
+                     int line, std::vector<Token>& tokens) {
+    std::string known;
+    for (std::size_t i = 0; i < form.parts.size(); ++i)
+        known += std::string(i == 0                       ? "\""
+                             : i + 1 == form.parts.size() ? " or \""
+                                                          : ", \"") +
+                 std::string(form.parts[i].key) + "\"";
+    for (std::size_t k = 0; k < value.keys.size(); ++k) {
+        bool named = false;
+        for (const ObjectPart& part : form.parts) named = named || value.keys[k] == part.key;
+        if (!named)
+            throw InputError(name, line, value.key_columns[k],
+                             "found the key " + io::json_quoted(value.keys[k]) + ", expected " +
+                                 known);
+        for (std::size_t j = 0; j < k; ++j)
+            if (value.keys[j] == value.keys[k])
+                throw InputError(name, line, value.key_columns[k],
+                                 "found a second key " + io::json_quoted(value.keys[k]) +
+                                     ", expected each key once");
+    }
+    for (const ObjectPart& part : form.parts) {
+        for (std::size_t k = 0; k < value.keys.size(); ++k) {
+            if (value.keys[k] != part.key) continue;
+            if (part.labelled) tokens.push_back({std::string(part.key), value.key_columns[k]});
+            const io::JsonValue& item = value.items[k];
+            if (item.type == io::JsonValue::Type::array)
+                for (const io::JsonValue& x : item.items) tokens.push_back(operand(x));
+            else
+                tokens.push_back(operand(item));
+        }
+    }
+}
 
 } // namespace
 
@@ -122,8 +211,8 @@ void CertificateReader::split_text() {
 
 // One JSON object becomes one statement a key, in the order of
 // json_keywords. A key's value gives the operands: a scalar is one, an
-// array one per element, true none, and an object (the cycle's state) its
-// "point" then its "direction".
+// array one per element, true none, and an object (state, step, branch,
+// lit) its parts in the order of its form (object_forms).
 void CertificateReader::split_json() {
     using io::JsonValue;
     const JsonValue object = io::parse_json(line_, name_, clamp_int(line_number_));
@@ -152,16 +241,6 @@ void CertificateReader::split_json() {
         throw InputError(name_, line, object.column,
                          "found an empty object, expected a certificate statement");
 
-    auto operand = [](const JsonValue& v) -> Token {
-        switch (v.type) {
-        case JsonValue::Type::array:
-            return {"[...]", v.column};
-        case JsonValue::Type::object:
-            return {"{...}", v.column};
-        default:
-            return {v.text, v.column};
-        }
-    };
     bool first = true;
     for (std::string_view keyword : json_keywords) {
         for (std::size_t i = 0; i < object.keys.size(); ++i) {
@@ -173,15 +252,9 @@ void CertificateReader::split_json() {
             s.end_column = value.column;
             if (value.type == JsonValue::Type::array) {
                 for (const JsonValue& item : value.items) s.tokens.push_back(operand(item));
-            } else if (value.type == JsonValue::Type::object) {
-                for (std::size_t k = 0; k < value.keys.size(); ++k)
-                    if (value.keys[k] != "point" && value.keys[k] != "direction")
-                        throw InputError(name_, line, value.key_columns[k],
-                                         "found the key " + io::json_quoted(value.keys[k]) +
-                                             ", expected \"point\" or \"direction\"");
-                for (std::string_view part : {"point", "direction"})
-                    if (const JsonValue* p = value.find(part))
-                        for (const JsonValue& item : p->items) s.tokens.push_back(operand(item));
+            } else if (const ObjectForm* form = object_form(keyword);
+                       form && value.type == JsonValue::Type::object) {
+                object_operands(value, *form, name_, line, s.tokens);
             } else if (value.type != JsonValue::Type::boolean || value.text != "true") {
                 s.tokens.push_back(operand(value));
             }

@@ -24,6 +24,11 @@ struct IncompleteCertificate {};
 
 class CertificateReader {
 public:
+    struct Token {
+        std::string text;
+        int column = 0; // 1-based
+    };
+
     // The format is recognised from the first non-blank line: JSON Lines
     // when it starts with '{', text otherwise.
     CertificateReader(std::istream& in, const std::string& name);
@@ -34,6 +39,8 @@ public:
     void advance();
 
     CertificateFormat format() const { return format_; }
+    // The line of the current statement, for messages that point back at it.
+    long long line() const { return statement_.line; }
     std::string_view keyword() const { return statement_.tokens[0].text; }
     std::string_view token(std::size_t index) const { return statement_.tokens[index].text; }
     std::size_t size() const { return statement_.tokens.size(); }
@@ -60,10 +67,6 @@ public:
     Integer count(std::size_t index) const;
 
 private:
-    struct Token {
-        std::string text;
-        int column = 0; // 1-based
-    };
     struct Statement {
         std::vector<Token> tokens;
         long long line = 0;

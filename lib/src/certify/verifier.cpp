@@ -1,14 +1,17 @@
 // The independent certificate checker (docs/certificates.md). It replays the
-// listed path with its own "first element met" scan in plain rationals and
-// shares no code with any solver, so trusting an answer only means trusting
-// this file, the scene parser and the certificate tokenizer
-// (certificate_reader.cpp, pure parsing). The certificate is read as a stream: the
-// path may have 10^8 points, so only the current state, state 1 and counters
-// are kept, never the points themselves.
+// listed path with its own first acting event scan (acting_rule.hpp) in
+// plain rationals and shares no code with any solver, so trusting an answer
+// only means trusting the certify/ checker files, the scene parser and the
+// certificate tokenizer (certificate_reader.cpp, pure parsing). The
+// certificate is read as a stream: the path may have 10^8 points, so only
+// the current state, state 1 and counters are kept, never the points
+// themselves. Illumination certificates go to illumination_verifier.cpp,
+// induction certificates to induction_verifier.cpp.
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 
 #include "certify/certificate_reader.hpp"
+#include "certify/illumination_verifier.hpp"
 #include "certify/induction_verifier.hpp"
 #include "certify/path_geometry.hpp"
 
@@ -31,14 +34,7 @@ using certify::first_met;
 using certify::on_ray;
 using certify::same;
 using certify::show;
-
-// Portable std::uint64_t -> mpz (unsigned long may be 32 bits).
-Integer to_integer(std::uint64_t n) {
-    Integer result = static_cast<unsigned long>(n >> 32);
-    result <<= 32;
-    result += static_cast<unsigned long>(n & 0xffffffffu);
-    return result;
-}
+using certify::to_integer;
 
 // ------------------------------------------------------------------- path --
 
@@ -47,7 +43,13 @@ Integer to_integer(std::uint64_t n) {
 // first failing step is the one reported.
 class PathCheck {
 public:
-    explicit PathCheck(const Scene& scene) : scene_(scene), dim_(scene.dim) {}
+    explicit PathCheck(const Scene& scene) : scene_(scene), dim_(scene.dim) {
+        // The points of one path answer only the question of one ray and
+        // one target; the rest of the file is still parsed.
+        if (!scene.single_trajectory())
+            failure_ = "invalid: the scene has several rays or targets, or a splitter: its "
+                       "certificate must answer the illumination question ('illumination')";
+    }
 
     void point(const Vector& q) {
         const std::uint64_t k = points_++;
@@ -82,13 +84,9 @@ public:
         }
         for (int j = 0; j < dim_; ++j)
             if (e.flip[j]) v_[j] = -v_[j];
-        // Keep state 1 and the first later state equal to it: the step map
-        // is injective, so a periodic path returns to state 1 first.
-        if (k == 1) {
+        if (k == 1) { // state 1, the induction certificates' anchor
             p1_ = p_;
             v1_ = v_;
-        } else if (!repeat_ && same(p_, p1_, dim_) && same(v_, v1_, dim_)) {
-            repeat_ = k;
         }
     }
 
@@ -99,7 +97,6 @@ public:
     const Vector& p1() const { return p1_; }
     const Vector& v1() const { return v1_; }
     bool stopped() const { return stopped_; }
-    const std::optional<std::uint64_t>& repeat() const { return repeat_; }
 
 private:
     void fail(std::uint64_t step, const std::string& what) {
@@ -112,7 +109,6 @@ private:
     Vector p_, v_;         // the last point and the direction the ray leaves it in
     Vector p1_, v1_;       // state 1
     bool stopped_ = false; // an absorber is met at the last point
-    std::optional<std::uint64_t> repeat_;
     std::optional<std::string> failure_;
 };
 
@@ -127,7 +123,50 @@ struct Claim {
     Integer reflections;
     Vector extra, extra_v;
     Integer period;
+    std::optional<Integer> tail; // cycle: the `tail` line, when given
 };
+
+// The cycle claim (docs/certificates.md): with s_i the state after event
+// i, s_(T+1) is the stated state, s_(T+1+L) returns to it and no state in
+// between does (L least), and if T >= 1 then s_T != s_(T+L): the state
+// before the cycle's start is not on the cycle, so T is least (a state on
+// the cycle stays on it). The listed points were checked to be these
+// events; the states are walked again from the start (T + L + 1 steps,
+// O(1) memory), since T and L are read only after the points. The caller
+// checked that the path reaches p_(T+L+1), so T and L fit in 64 bits.
+std::optional<std::string> check_cycle(const Scene& scene, const Claim& claim, std::uint64_t tail,
+                                       std::uint64_t period) {
+    const int dim = scene.dim;
+    Vector p = scene.ray().start, v = scene.ray().direction;
+    Vector p_tail, v_tail; // s_T
+    const std::uint64_t start = tail + 1;
+    auto point = [](std::uint64_t i) { return "point " + std::to_string(i); };
+    for (std::uint64_t i = 1; i <= start + period; ++i) {
+        const Event e = first_met(scene, p, v);
+        p = advance(p, v, e.t, dim); // met, not absorbed: the points were checked
+        for (int j = 0; j < dim; ++j)
+            if (e.flip[j]) v[j] = -v[j];
+        const bool at_start = same(p, claim.extra, dim) && same(v, claim.extra_v, dim);
+        if (i == tail) {
+            p_tail = p;
+            v_tail = v;
+        } else if (i == start && !at_start) {
+            return "state " + show(claim.extra, dim) + " " + show(claim.extra_v, dim) +
+                   " is not the state at " + point(start) + " (tail + 1), " + show(p, dim) + " " +
+                   show(v, dim);
+        } else if (i > start && i < start + period && at_start) {
+            return "period " + std::to_string(period) + ", but the state at " + point(start) +
+                   " returns at " + point(i) + ": period " + std::to_string(i - start);
+        } else if (i == start + period && !at_start) {
+            return "the state at " + point(i) + " is not the state at " + point(start) +
+                   ": no cycle of period " + std::to_string(period) + " starts there";
+        }
+        if (tail >= 1 && i == tail + period && same(p, p_tail, dim) && same(v, v_tail, dim))
+            return "tail " + std::to_string(tail) + ", but the state at " + point(tail) +
+                   " returns at " + point(i) + ": it is on the cycle, so the tail is shorter";
+    }
+    return std::nullopt;
+}
 
 Verdict bad(const std::string& what) {
     return {false, "invalid: verdict: " + what};
@@ -176,19 +215,21 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
         expected -= 1;
         break;
     case Reason::cycle: {
-        // The points run at least to the first return to state 1 (a detector
-        // that notices the cycle late, like Brent's, streams a few more; they
-        // were checked as steps like any other). That first return fixes L.
-        if (path.points() < 3) return bad("a cycle needs at least two points after point 0");
-        if (!same(claim.extra, path.p1(), dim) || !same(claim.extra_v, path.v1(), dim))
-            return bad("state " + show(claim.extra, dim) + " " + show(claim.extra_v, dim) +
-                       " is not state 1 " + show(path.p1(), dim) + " " + show(path.v1(), dim));
-        if (!path.repeat()) return bad("the path never returns to state 1 by " + at_last);
-        expected = to_integer(*path.repeat() - 1);
-        if (claim.period != expected)
-            return bad("period " + claim.period.get_str() + ", but the path first returns to " +
-                       "state 1 at point " + std::to_string(*path.repeat()) + ": period " +
-                       expected.get_str());
+        const Integer tail = claim.tail.value_or(0);
+        if (!claim.tail && scene.has_one_sided())
+            return bad("a cycle in a scene with one-sided elements needs its 'tail' line");
+        if (claim.period == 0) return bad("period 0: a cycle's period is at least 1");
+        // The listed points must reach p_(T+L+1), the first return to the
+        // cycle's start; a detector that notices the cycle late (Brent's)
+        // streams a few more, checked as steps like any other.
+        const Integer needed = tail + claim.period + 1;
+        if (to_integer(last) < needed)
+            return bad("tail " + tail.get_str() + " and period " + claim.period.get_str() +
+                       " need the points up to point " + needed.get_str() + ", but the last is " +
+                       at_last);
+        if (auto failure = check_cycle(scene, claim, tail.get_ui(), claim.period.get_ui()))
+            return bad(*failure);
+        expected = tail + claim.period;
         break;
     }
     case Reason::limit:
@@ -220,18 +261,14 @@ Reason read_reason(const certify::CertificateReader& in) {
 
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name) {
-    // This checker reads the rules of semantics.md only: it would accept
-    // paths that ignore a one-sided element's back or a splitter's second
-    // branch, so it accepts nothing for such scenes (docs/optics.md).
-    if (!scene.single_trajectory() || scene.has_one_sided())
-        return {false, "invalid: certificates for scenes with splitters, one-sided elements or "
-                       "several rays or targets are not supported yet"};
     certify::CertificateReader in(certificate, certificate_name);
     PathCheck path(scene);
     Claim claim;
     const int dim = scene.dim;
     try {
         in.read_header(dim);
+        // The illumination question has its own form and checker.
+        if (in.keyword() == "illumination") return certify::verify_illumination(scene, in);
         while (in.keyword() == "point") {
             in.expect("point", dim, "a number");
             path.point(in.vector(1, dim));
@@ -244,6 +281,10 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
         if (in.keyword() == "method") {
             certify::PathPrefix prefix;
             prefix.failure = path.failure();
+            // Induction needs a bijective step map: two-sided elements only.
+            if (!prefix.failure && scene.has_one_sided())
+                prefix.failure = "invalid: induction certificates are for scenes without "
+                                 "one-sided elements";
             prefix.points = path.points();
             prefix.absorbed = path.stopped();
             prefix.p1 = path.p1();
@@ -283,7 +324,15 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
             in.advance();
             in.expect("period", 1, "a non-negative integer");
             claim.period = in.count(1);
-            break;
+            in.advance();
+            if (in.keyword() == "tail") {
+                in.expect("tail", 1, "a non-negative integer");
+                claim.tail = in.count(1);
+                in.advance();
+            }
+            in.expect("end", 0, in.end_of_statement());
+            if (in.next()) in.fail(0, "end of file (nothing may follow 'end')");
+            return judge(scene, path, claim);
         case Reason::limit:
             in.advance();
             in.expect("partial", 0, in.end_of_statement());
