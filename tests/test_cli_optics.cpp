@@ -130,9 +130,10 @@ TEST_CASE("convert round-trips the new scenes through JSON", "[cli][optics]") {
           run_cli("solve --json " + quote(json)).out.substr(0, 60));
 }
 
-TEST_CASE("verify accepts no certificate for the new scenes", "[cli][optics]") {
+TEST_CASE("verify judges a certificate by the scene's sides", "[cli][optics]") {
     // A certificate that is valid for the scene without the one-way mirror
-    // must not pass for the scene with it: the checker does not know sides.
+    // must not pass for the scene with it: its front at x = 5 turns the ray
+    // back before x = 10.
     TempDir dir;
     const std::string plain = dir.write("plain.scene", "dim 2\nmirror x 10 y 0 10\n"
                                                        "ray 2 3 1 0\ntarget 0 3\n");
@@ -144,5 +145,6 @@ TEST_CASE("verify accepts no certificate for the new scenes", "[cli][optics]") {
     REQUIRE(run_cli("verify " + quote(plain) + " " + quote(cert)).status == 0);
     const CliResult r = run_cli("verify " + quote(one_way) + " " + quote(cert));
     CHECK(r.status == 1);
-    CHECK(r.out.find("not supported yet") != std::string::npos);
+    CHECK(r.out == "invalid: step 1: point 1 is (10, 3), but the ray from point 0 first meets an "
+                   "element at (5, 3)\n");
 }
