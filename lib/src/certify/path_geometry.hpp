@@ -58,6 +58,13 @@ inline Integer to_integer(std::uint64_t n) {
     return result;
 }
 
+// Its inverse, for 0 <= n < 2^64.
+inline std::uint64_t to_uint64(const Integer& n) {
+    const Integer high = n >> 32;
+    const Integer low = n - (high << 32);
+    return (static_cast<std::uint64_t>(high.get_ui()) << 32) | low.get_ui();
+}
+
 inline std::string show(const Vector& a, int dim) {
     std::string text = "(";
     for (int j = 0; j < dim; ++j) text += (j ? ", " : "") + to_string(a[j]);

@@ -35,6 +35,7 @@ using certify::on_ray;
 using certify::same;
 using certify::show;
 using certify::to_integer;
+using certify::to_uint64;
 
 // ------------------------------------------------------------------- path --
 
@@ -227,7 +228,7 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
             return bad("tail " + tail.get_str() + " and period " + claim.period.get_str() +
                        " need the points up to point " + needed.get_str() + ", but the last is " +
                        at_last);
-        if (auto failure = check_cycle(scene, claim, tail.get_ui(), claim.period.get_ui()))
+        if (auto failure = check_cycle(scene, claim, to_uint64(tail), to_uint64(claim.period)))
             return bad(*failure);
         expected = tail + claim.period;
         break;
@@ -324,15 +325,7 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
             in.advance();
             in.expect("period", 1, "a non-negative integer");
             claim.period = in.count(1);
-            in.advance();
-            if (in.keyword() == "tail") {
-                in.expect("tail", 1, "a non-negative integer");
-                claim.tail = in.count(1);
-                in.advance();
-            }
-            in.expect("end", 0, in.end_of_statement());
-            if (in.next()) in.fail(0, "end of file (nothing may follow 'end')");
-            return judge(scene, path, claim);
+            break;
         case Reason::limit:
             in.advance();
             in.expect("partial", 0, in.end_of_statement());
@@ -342,6 +335,12 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
             break;
         }
         in.advance();
+        // A cycle's tail (docs/certificates.md) may be left out when it is 0.
+        if (claim.reason == Reason::cycle && in.keyword() == "tail") {
+            in.expect("tail", 1, "a non-negative integer");
+            claim.tail = in.count(1);
+            in.advance();
+        }
         in.expect("end", 0, in.end_of_statement());
         if (in.next()) in.fail(0, "end of file (nothing may follow 'end')");
     } catch (const certify::IncompleteCertificate&) {
