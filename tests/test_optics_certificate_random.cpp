@@ -37,7 +37,7 @@ using orthoray::test::verify;
 } // namespace
 
 TEST_CASE("illumination certificates built from the reference step verify and agree with solve",
-          "[certificate][optics][property]") {
+          "[certificate][optics][property][slow]") {
     // The certificate comes from the engines' own step (tests/support/
     // branch_certificate.cpp), the check from the verifier's: two readings
     // of the rules that must agree, on scenes with splitters, one-sided
@@ -102,7 +102,7 @@ TEST_CASE("illumination certificates built from the reference step verify and ag
 }
 
 TEST_CASE("path certificates of one-sided scenes built from the reference step verify",
-          "[certificate][optics][property]") {
+          "[certificate][optics][property][slow]") {
     // Single trajectories with one-sided elements: the points from the
     // engines' step, the tail and period from solve(); a tail one longer
     // (told consistently) must fail as not least.
