@@ -98,7 +98,8 @@ public:
         }
     }
 
-    // Checks 1 to 3 (minimality) of a complete certificate.
+    // Checks 3 to 5 of docs/certificates.md, for a complete certificate:
+    // the rays' start states, then one walk of every stretch.
     void closure_and_targets() {
         for (std::size_t r = 0; r < scene_.rays.size(); ++r) {
             const Ray& ray = scene_.rays[r];
@@ -115,7 +116,7 @@ public:
         for (const BranchLine& line : claims_.branches) walk(line);
     }
 
-    // Check 4, and the verdict of a partial certificate.
+    // Check 6: the verdict's lines (for a partial certificate as well).
     Verdict verdict() const {
         Integer largest = 0;
         bool all_lit = true;
