@@ -148,3 +148,36 @@ TEST_CASE("verify judges a certificate by the scene's sides", "[cli][optics]") {
     CHECK(r.out == "invalid: step 1: point 1 is (10, 3), but the ray from point 0 first meets an "
                    "element at (5, 3)\n");
 }
+
+TEST_CASE("verify checks illumination certificates: exit 0 valid, 1 invalid or partial",
+          "[cli][optics]") {
+    // The splitter scene above: target 1 straight through, target 2 on the
+    // reflected branch, target 3 (2, -3) on neither.
+    TempDir dir;
+    const std::string scene = dir.write("split.scene", splitter_scene);
+    const std::string branches = "orthoray-certificate 1\ndim 2\nillumination\n"
+                                 "branch 0 0 1 0 ray 1 reflections 0\n"
+                                 "branch 2 0 1 0 ray 1 reflections 0\n"
+                                 "branch 2 0 -1 0 ray 1 reflections 1\n"
+                                 "lit 1 reflections 0 ray 1\nstep 0 0 1 0\nstep 2 0 1 0\n"
+                                 "lit 2 reflections 1 ray 1\nstep 0 0 1 0\nstep 2 0 -1 0\n";
+    const std::string valid =
+        dir.write("valid.cert",
+                  branches + "unlit 3\nanswer no\nreason unlit\nreflections 1\nstates 3\nend\n");
+    CliResult r = run_cli("verify " + quote(scene) + " " + quote(valid));
+    CHECK(r.status == 0);
+    CHECK(r.out == "valid: unlit, 1 reflections, 3 states\n");
+    const std::string partial =
+        dir.write("partial.cert", branches + "unknown 3\nanswer unknown\nreason limit\n"
+                                             "reflections 1\nstates 3\npartial\nend\n");
+    r = run_cli("verify " + quote(scene) + " " + quote(partial));
+    CHECK(r.status == 1);
+    CHECK(r.out.rfind("partial certificate: 2 lit", 0) == 0);
+    const std::string wrong = dir.write(
+        "wrong.cert", branches + "lit 3 reflections 0 ray 1\nstep 0 0 1 0\n"
+                                 "answer yes\nreason lit\nreflections 1\nstates 3\nend\n");
+    r = run_cli("verify " + quote(scene) + " " + quote(wrong));
+    CHECK(r.status == 1);
+    CHECK(r.out == "invalid: lit target 3 (line 13): the target (2, -3) is not on the segment "
+                   "after step 0\n");
+}
