@@ -164,7 +164,8 @@ TEST_CASE("a one-way mirror's rho cycle: tail, period and sides", "[certificate]
     std::string shorter = replaced(rho_cert, "tail 1", "tail 0");
     shorter = replaced(shorter, "state 10 3 -1 0", "state 0 3 1 0");
     shorter = replaced(shorter, "reflections 3", "reflections 2");
-    expect_invalid(scene, shorter, "the state at point 3 is not the state at point 1");
+    expect_invalid(scene, shorter,
+                   "period 2, but the state at point 3 is not the state at point 1");
     // Only the tail line changed: s2 is not the state at point 1.
     expect_invalid(scene, replaced(rho_cert, "tail 1", "tail 0"),
                    "state (10, 3) (-1, 0) is not the state at point 1");

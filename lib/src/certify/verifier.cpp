@@ -159,8 +159,9 @@ std::optional<std::string> check_cycle(const Scene& scene, const Claim& claim, s
             return "period " + std::to_string(period) + ", but the state at " + point(start) +
                    " returns at " + point(i) + ": period " + std::to_string(i - start);
         } else if (i == start + period && !at_start) {
-            return "the state at " + point(i) + " is not the state at " + point(start) +
-                   ": no cycle of period " + std::to_string(period) + " starts there";
+            return "period " + std::to_string(period) + ", but the state at " + point(i) +
+                   " is not the state at " + point(start) +
+                   ": no cycle of that period starts there";
         }
         if (tail >= 1 && i == tail + period && same(p, p_tail, dim) && same(v, v_tail, dim))
             return "tail " + std::to_string(tail) + ", but the state at " + point(tail) +
