@@ -1,6 +1,9 @@
-// libFuzzer target: the certificate reader and verifier, on a fixed scene
-// (the 3 x 5 mirror box). Any bytes give a verdict or an InputError; a
-// verdict of valid must be for the true answer (yes, 6 reflections).
+// libFuzzer target: the certificate reader and verifier, on two fixed
+// scenes: the 3 x 5 mirror box (a single trajectory) and a splitter scene
+// (the illumination question). Any bytes give a verdict or an InputError;
+// a verdict of valid must be for the true answer: for the box, yes after 6
+// reflections; for the splitter scene, targets 1 and 2 lit (the second
+// after 1 reflection) and target 3 unlit.
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 
@@ -10,21 +13,37 @@
 #include <sstream>
 #include <string>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static const orthoray::Scene scene = orthoray::read_scene("dim 2\n"
-                                                              "mirror x 0 y 0 5\n"
-                                                              "mirror x 3 y 0 5\n"
-                                                              "mirror y 0 x 0 3\n"
-                                                              "mirror y 5 x 0 3\n"
-                                                              "ray 0 0 1 1\n"
-                                                              "target 3 5\n");
-    std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+namespace {
+
+void check(const orthoray::Scene& scene, const std::string& bytes, const char* truth) {
+    std::istringstream in(bytes);
     try {
         const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "fuzz");
-        if (verdict.valid && verdict.message.find("hit, 6 reflections") == std::string::npos)
+        if (verdict.valid && verdict.message.find(truth) == std::string::npos)
             std::abort(); // a certificate proved something false
     } catch (const orthoray::InputError& e) {
         if (e.line() < 1 || e.column() < 1) std::abort();
     }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static const orthoray::Scene box = orthoray::read_scene("dim 2\n"
+                                                            "mirror x 0 y 0 5\n"
+                                                            "mirror x 3 y 0 5\n"
+                                                            "mirror y 0 x 0 3\n"
+                                                            "mirror y 5 x 0 3\n"
+                                                            "ray 0 0 1 1\n"
+                                                            "target 3 5\n");
+    static const orthoray::Scene split = orthoray::read_scene("dim 2\n"
+                                                              "splitter x 2 y -1 1\n"
+                                                              "ray 0 0 1 0\n"
+                                                              "target 5 0\n"
+                                                              "target -3 0\n"
+                                                              "target 2 -3\n");
+    const std::string bytes(reinterpret_cast<const char*>(data), size);
+    check(box, bytes, "hit, 6 reflections");
+    check(split, bytes, "unlit, 1 reflections,");
     return 0;
 }
