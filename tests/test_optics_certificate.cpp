@@ -4,17 +4,26 @@
 // each tampered copy is rejected for the reason it was tampered for, which
 // the message must name. The writer is not used here: these literals are
 // the verifier's own specification.
+#include "support/case_count.hpp"
 #include "support/certificate_outcome.hpp"
+#include "support/portable_random.hpp"
 
 #include "orthoray/parse.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
 using orthoray::Scene;
+namespace test = orthoray::test;
 using orthoray::test::Outcome;
 using orthoray::test::verify;
 
@@ -408,4 +417,66 @@ TEST_CASE("malformed illumination statements are located", "[certificate][optics
                      "\"rays\": \"1\"}}\n",
                      "<test>:3:57: found the key \"rays\", expected \"point\", \"direction\", "
                      "\"ray\" or \"reflections\"");
+}
+
+TEST_CASE("random mutations of the hand-made certificates never prove a false answer",
+          "[certificate][optics][property]") {
+    // Each mutation drops, repeats or swaps lines, or moves one number by
+    // one. Whatever verify makes of the result, a valid verdict must be the
+    // true one (the reason and the count of the original).
+    struct Case {
+        std::string scene, certificate, truth;
+    };
+    const Case cases[] = {
+        {rho_scene, rho_cert, "valid: cycle, 3 reflections"},
+        {split_scene, split_cert, "valid: lit, 1 reflections"},
+        {closed_scene, closed_cert, "valid: unlit, 1 reflections"},
+        {tie_scene, tie_cert, "valid: lit, 1 reflections"},
+        {sided_scene, sided_cert, "valid: lit, 1 reflections"},
+    };
+    std::mt19937_64 rng(1217);
+    int rejected = 0, total = 0;
+    for (const Case& c : cases) {
+        const Scene scene = scene_of(c.scene);
+        std::vector<std::string> lines;
+        std::istringstream in(c.certificate);
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        const auto last = static_cast<std::int64_t>(lines.size()) - 1;
+        for (int i = 0; i < test::case_count(400); ++i) {
+            std::vector<std::string> m = lines;
+            const auto a = static_cast<std::size_t>(orthoray::uniform(rng, 0, last));
+            const auto b = static_cast<std::size_t>(orthoray::uniform(rng, 0, last));
+            switch (orthoray::uniform(rng, 0, 3)) {
+            case 0:
+                m.erase(m.begin() + static_cast<std::ptrdiff_t>(a));
+                break;
+            case 1:
+                m.insert(m.begin() + static_cast<std::ptrdiff_t>(a), m[b]);
+                break;
+            case 2:
+                std::swap(m[a], m[b]);
+                break;
+            default: { // one number token of line a, moved by +-1
+                std::istringstream words(m[a]);
+                std::vector<std::string> t;
+                for (std::string w; words >> w;) t.push_back(w);
+                const auto k = static_cast<std::size_t>(
+                    orthoray::uniform(rng, 0, static_cast<std::int64_t>(t.size()) - 1));
+                const orthoray::NumberToken n = orthoray::read_number(t[k]);
+                if (n.status != orthoray::NumberToken::Status::ok) continue;
+                t[k] = orthoray::to_string(n.value + (orthoray::uniform(rng, 0, 1) ? 1 : -1));
+                m[a].clear();
+                for (const std::string& w : t) m[a].append(m[a].empty() ? "" : " ").append(w);
+            }
+            }
+            std::string text;
+            for (const std::string& line : m) text.append(line).append("\n");
+            const Outcome outcome = verify(scene, text);
+            ++total;
+            rejected += !outcome.valid;
+            INFO("mutated certificate:\n" << text << "verify said: " << outcome.message);
+            if (outcome.valid) CHECK(outcome.message.rfind(c.truth, 0) == 0);
+        }
+    }
+    CHECK(rejected > total / 2);
 }
