@@ -85,9 +85,13 @@ public:
         }
         for (int j = 0; j < dim_; ++j)
             if (e.flip[j]) v_[j] = -v_[j];
-        if (k == 1) { // state 1, the induction certificates' anchor
+        // Keep state 1 and the first later state equal to it: for a cycle
+        // without a tail that return settles the claim in this one pass.
+        if (k == 1) {
             p1_ = p_;
             v1_ = v_;
+        } else if (!repeat_ && same(p_, p1_, dim_) && same(v_, v1_, dim_)) {
+            repeat_ = k;
         }
     }
 
@@ -98,6 +102,7 @@ public:
     const Vector& p1() const { return p1_; }
     const Vector& v1() const { return v1_; }
     bool stopped() const { return stopped_; }
+    const std::optional<std::uint64_t>& repeat() const { return repeat_; }
 
 private:
     void fail(std::uint64_t step, const std::string& what) {
@@ -110,6 +115,7 @@ private:
     Vector p_, v_;         // the last point and the direction the ray leaves it in
     Vector p1_, v1_;       // state 1
     bool stopped_ = false; // an absorber is met at the last point
+    std::optional<std::uint64_t> repeat_;
     std::optional<std::string> failure_;
 };
 
@@ -132,16 +138,41 @@ struct Claim {
 // between does (L least), and if T >= 1 then s_T != s_(T+L): the state
 // before the cycle's start is not on the cycle, so T is least (a state on
 // the cycle stays on it). The listed points were checked to be these
-// events; the states are walked again from the start (T + L + 1 steps,
-// O(1) memory), since T and L are read only after the points. The caller
-// checked that the path reaches p_(T+L+1), so T and L fit in 64 bits.
-std::optional<std::string> check_cycle(const Scene& scene, const Claim& claim, std::uint64_t tail,
+// events, and the caller checked that they reach p_(T+L+1), so T and L fit
+// in 64 bits.
+std::optional<std::string> check_cycle(const Scene& scene, const PathCheck& path,
+                                       const Claim& claim, std::uint64_t tail,
                                        std::uint64_t period) {
     const int dim = scene.dim;
+    auto point = [](std::uint64_t i) { return "point " + std::to_string(i); };
+    auto returns = [&](std::uint64_t start, std::uint64_t i) {
+        return "period " + std::to_string(period) + ", but the state at " + point(start) +
+               " returns at " + point(i) + ": period " + std::to_string(i - start);
+    };
+    auto no_return = [&](std::uint64_t start) {
+        return "period " + std::to_string(period) + ", but the state at " + point(start + period) +
+               " is not the state at " + point(start) + ": no cycle of that period starts there";
+    };
+    auto not_start = [&](std::uint64_t start, const Vector& p, const Vector& v) {
+        return "state " + show(claim.extra, dim) + " " + show(claim.extra_v, dim) +
+               " is not the state at " + point(start) + " (tail + 1), " + show(p, dim) + " " +
+               show(v, dim);
+    };
+    // Without a tail, state 1 and its first return were kept while the
+    // points streamed by: no second walk (two-sided scenes always take
+    // this way).
+    if (tail == 0) {
+        if (!same(path.p1(), claim.extra, dim) || !same(path.v1(), claim.extra_v, dim))
+            return not_start(1, path.p1(), path.v1());
+        if (path.repeat() && *path.repeat() < 1 + period) return returns(1, *path.repeat());
+        if (path.repeat() != 1 + period) return no_return(1);
+        return std::nullopt;
+    }
+    // With a tail, T and L are read only after the points, so the states
+    // are walked again from the start: T + L + 1 steps, O(1) memory.
     Vector p = scene.ray().start, v = scene.ray().direction;
     Vector p_tail, v_tail; // s_T
     const std::uint64_t start = tail + 1;
-    auto point = [](std::uint64_t i) { return "point " + std::to_string(i); };
     for (std::uint64_t i = 1; i <= start + period; ++i) {
         const Event e = first_met(scene, p, v);
         p = advance(p, v, e.t, dim); // met, not absorbed: the points were checked
@@ -152,18 +183,13 @@ std::optional<std::string> check_cycle(const Scene& scene, const Claim& claim, s
             p_tail = p;
             v_tail = v;
         } else if (i == start && !at_start) {
-            return "state " + show(claim.extra, dim) + " " + show(claim.extra_v, dim) +
-                   " is not the state at " + point(start) + " (tail + 1), " + show(p, dim) + " " +
-                   show(v, dim);
+            return not_start(start, p, v);
         } else if (i > start && i < start + period && at_start) {
-            return "period " + std::to_string(period) + ", but the state at " + point(start) +
-                   " returns at " + point(i) + ": period " + std::to_string(i - start);
+            return returns(start, i);
         } else if (i == start + period && !at_start) {
-            return "period " + std::to_string(period) + ", but the state at " + point(i) +
-                   " is not the state at " + point(start) +
-                   ": no cycle of that period starts there";
+            return no_return(start);
         }
-        if (tail >= 1 && i == tail + period && same(p, p_tail, dim) && same(v, v_tail, dim))
+        if (i == tail + period && same(p, p_tail, dim) && same(v, v_tail, dim))
             return "tail " + std::to_string(tail) + ", but the state at " + point(tail) +
                    " returns at " + point(i) + ": it is on the cycle, so the tail is shorter";
     }
@@ -229,7 +255,8 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
             return bad("tail " + tail.get_str() + " and period " + claim.period.get_str() +
                        " need the points up to point " + needed.get_str() + ", but the last is " +
                        at_last);
-        if (auto failure = check_cycle(scene, claim, to_uint64(tail), to_uint64(claim.period)))
+        if (auto failure =
+                check_cycle(scene, path, claim, to_uint64(tail), to_uint64(claim.period)))
             return bad(*failure);
         expected = tail + claim.period;
         break;
