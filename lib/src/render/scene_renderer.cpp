@@ -4,6 +4,7 @@
 #include "orthoray/render.hpp"
 
 #include "render/frame.hpp"
+#include "render/markers.hpp"
 #include "render/path_thinner.hpp"
 #include "render/svg_writer.hpp"
 #include "render/view_axes.hpp"
@@ -136,34 +137,13 @@ struct SceneRenderer::Impl {
             if (v.shapes >= cap) elements_drawn = std::min(elements_drawn, v.shapes);
     }
 
-    // Short ticks on the side a one-sided element acts on, along the edges
-    // of its shape in this view: the direction is where a step off the
-    // element toward that side lands on the page. A view that looks along
-    // the normal (a face seen head-on) has no such direction and no ticks.
-    void side_ticks(const View& v, const Element& e, const Point3& corner,
-                    const std::vector<Pixel>& shape, std::string& d) const {
+    // Ticks on the side a one-sided element acts on (markers.hpp): toward
+    // where a step off the element to that side lands on the page.
+    static void side_ticks(const View& v, const Element& e, const Point3& corner,
+                           const std::vector<Pixel>& shape, std::string& d) {
         Point3 off = corner;
         off[static_cast<std::size_t>(e.axis)] += e.side == Side::plus ? 0.01 : -0.01;
-        const Pixel a = v.map(corner), b = v.map(off);
-        const double nx = b.x - a.x, ny = b.y - a.y, length = std::hypot(nx, ny);
-        if (!(length > 1e-9) || !std::isfinite(length)) return;
-        constexpr double spacing = 9, tick = 6;
-        const double ux = tick * nx / length, uy = tick * ny / length;
-        const std::size_t edges = shape.size() == 2 ? 1 : shape.size();
-        render::PathData ticks;
-        for (std::size_t i = 0; i < edges; ++i) {
-            const Pixel& p = shape[i];
-            const Pixel& q = shape[(i + 1) % shape.size()];
-            const double along = std::hypot(q.x - p.x, q.y - p.y);
-            if (!std::isfinite(along)) continue;
-            const int count = std::clamp(static_cast<int>(along / spacing), 1, 64);
-            for (int k = 0; k < count; ++k) {
-                const double t = (k + 0.5) / count;
-                const double x = p.x + t * (q.x - p.x), y = p.y + t * (q.y - p.y);
-                ticks.move(x, y).line(x + ux, y + uy);
-            }
-        }
-        d += ticks.text();
+        d += render::side_ticks(shape, v.map(corner), v.map(off));
     }
 
     // Where a ray from `from` along `direction` leaves the frame, in
@@ -314,26 +294,12 @@ struct SceneRenderer::Impl {
         }
     }
 
-    // A small label beside a marker when there are several rays or targets,
-    // to its left near the view's right edge so that it is not clipped.
-    static void write_label(SvgWriter& svg, const View& v, const Pixel& at,
-                            const std::string& text) {
-        const bool left = at.x > v.left + v.width - 80;
-        svg.text("text",
-                 {{"class", "marker-label"},
-                  {"x", number_text(left ? at.x - 10 : at.x + 10)},
-                  {"y", number_text(at.y - 10)},
-                  {"text-anchor", left ? "end" : "start"}},
-                 text);
-    }
-
-    // A ray's start: a dot, and an arrow along its direction as this view
-    // sees it.
+    // A ray's start and a point a little ahead along its direction, as
+    // this view sees them. The direction is scaled so its largest part is 1
+    // in normalised units (the scene's numbers may be far beyond what a
+    // double can divide).
     void write_start(SvgWriter& svg, const View& v, const Ray& ray) const {
         const Point3 from = frame.normalised(ray.start);
-        const Pixel s = v.map(from);
-        // The direction in normalised units, scaled so its largest part is
-        // 1 (the scene's numbers may be far beyond what a double can divide).
         Point3 ahead = from, d{0, 0, 0};
         double largest = 0;
         for (int j = 0; j < scene.dim; ++j) {
@@ -342,77 +308,39 @@ struct SceneRenderer::Impl {
         }
         if (largest > 0 && std::isfinite(largest))
             for (int j = 0; j < scene.dim; ++j) ahead[j] += 0.01 * d[j] / largest;
-        const Pixel a = v.map(ahead);
-        const double dx = a.x - s.x, dy = a.y - s.y, length = std::hypot(dx, dy);
-        svg.empty(
-            "circle",
-            {{"class", "start"}, {"cx", number_text(s.x)}, {"cy", number_text(s.y)}, {"r", "5"}});
-        if (length > 1e-6 && std::isfinite(length)) {
-            const double ux = dx / length, uy = dy / length, tip_x = s.x + 34 * ux,
-                         tip_y = s.y + 34 * uy;
-            svg.empty("path", {{"class", "start-arrow"},
-                               {"d", render::PathData()
-                                         .move(s.x, s.y)
-                                         .line(tip_x, tip_y)
-                                         .move(tip_x - 9 * ux + 5 * uy, tip_y - 9 * uy - 5 * ux)
-                                         .line(tip_x, tip_y)
-                                         .line(tip_x - 9 * ux - 5 * uy, tip_y - 9 * uy + 5 * ux)
-                                         .text()}});
-        }
+        render::write_start(svg, v.map(from), v.map(ahead));
     }
 
-    // A target: a circled cross, red when no status is known (a single
-    // trajectory's picture), gold when lit, grey and dashed when unlit,
-    // grey and dotted when a limit left it unknown.
-    void write_target(SvgWriter& svg, const View& v, std::size_t index) const {
-        const Pixel t = v.map(frame.normalised(scene.targets[index]));
-        std::string cls = "target";
-        if (index < target_status.size()) {
-            switch (target_status[index].status) {
-            case TargetAnswer::Status::lit:
-                cls = "target-lit";
-                break;
-            case TargetAnswer::Status::unlit:
-                cls = "target-unlit";
-                break;
-            case TargetAnswer::Status::unknown:
-                cls = "target-unknown";
-                break;
-            }
+    // The marker's look: plain without a status (a single trajectory's
+    // picture), else lit, unlit or unknown.
+    const char* target_class(std::size_t index) const {
+        if (index >= target_status.size()) return "target";
+        switch (target_status[index].status) {
+        case TargetAnswer::Status::lit:
+            return "target-lit";
+        case TargetAnswer::Status::unlit:
+            return "target-unlit";
+        case TargetAnswer::Status::unknown:
+            break;
         }
-        svg.empty("circle",
-                  {{"class", cls}, {"cx", number_text(t.x)}, {"cy", number_text(t.y)}, {"r", "9"}});
-        svg.empty("path", {{"class", cls},
-                           {"d", render::PathData()
-                                     .move(t.x - 7, t.y - 7)
-                                     .line(t.x + 7, t.y + 7)
-                                     .move(t.x - 7, t.y + 7)
-                                     .line(t.x + 7, t.y - 7)
-                                     .text()}});
+        return "target-unknown";
     }
 
     void write_markers(SvgWriter& svg, const View& v) const {
         for (std::size_t r = 0; r < scene.rays.size(); ++r) {
             write_start(svg, v, scene.rays[r]);
             if (scene.rays.size() > 1)
-                write_label(svg, v, v.map(frame.normalised(scene.rays[r].start)),
-                            "ray " + std::to_string(r + 1));
+                render::write_label(svg, v, v.map(frame.normalised(scene.rays[r].start)),
+                                    "ray " + std::to_string(r + 1));
         }
-        std::vector<Point3> absorbed = absorptions;
-        if (end && end->reason == Reason::absorbed && last) absorbed.push_back(*last);
-        for (const Point3& point : absorbed) {
-            const Pixel p = v.map(point);
-            svg.empty("rect", {{"class", "absorbed"},
-                               {"x", number_text(p.x - 5)},
-                               {"y", number_text(p.y - 5)},
-                               {"width", "10"},
-                               {"height", "10"}});
-        }
+        for (const Point3& point : absorptions) render::write_absorbed(svg, v.map(point));
+        if (end && end->reason == Reason::absorbed && last)
+            render::write_absorbed(svg, v.map(*last));
         for (std::size_t t = 0; t < scene.targets.size(); ++t) {
-            write_target(svg, v, t);
+            const Pixel at = v.map(frame.normalised(scene.targets[t]));
+            render::write_target(svg, at, target_class(t));
             if (scene.targets.size() > 1)
-                write_label(svg, v, v.map(frame.normalised(scene.targets[t])),
-                            "target " + std::to_string(t + 1));
+                render::write_label(svg, v, at, "target " + std::to_string(t + 1));
         }
     }
 
