@@ -283,7 +283,11 @@ Command add_render(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "render", "Draw the scene and the ray's path: SVG, or PNG when OUT ends in .png\n"
                   "(through rsvg-convert). 2D scenes get one view; 3D scenes get the xy, xz\n"
-                  "and yz projections and an oblique view. The caption gives the answer.\n\n"
+                  "and yz projections and an oblique view. The caption gives the answer.\n"
+                  "Scenes with splitters, one-sided elements, or several rays or targets are\n"
+                  "drawn as every branch of every ray (each reachable state once, at most\n"
+                  "--steps of them), shaded by reflections so far; splitters dashed, ticks on\n"
+                  "the side a one-sided element acts on, targets gold when lit, grey when not.\n\n"
                   "Example:\n"
                   "  orthoray render instances/2d/box-corner-3x5.scene -o box.svg\n"
                   "  orthoray solve maze.scene --certificate maze.cert\n"
@@ -299,7 +303,7 @@ Command add_render(CLI::App& app) {
     CLI::Option* steps =
         cmd->add_option("--steps", args->steps,
                         "draw the first N segments: without --certificate, solve with at most N "
-                        "reflections (default 1000)")
+                        "reflections (default 1000); for branches, walk at most N states")
             ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000'000}));
     add_scene_format_option(cmd, args->format);
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the drawing");
