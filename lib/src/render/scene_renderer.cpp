@@ -444,8 +444,10 @@ struct SceneRenderer::Impl {
             "path.target-unlit,path.target-unknown{stroke:#666;stroke-width:2}\n"
             "circle.target-unlit{fill:#fff;fill-opacity:0.7;stroke:#666;stroke-width:2;"
             "stroke-dasharray:3 2}\n"
-            "circle.target-unknown{fill:none;stroke:#999;stroke-width:2;stroke-dasharray:1 3}\n"
-            "text.marker-label{font-size:11px;fill:#333}\n"
+            "circle.target-unknown{fill:#fff;fill-opacity:0.7;stroke:#666;stroke-width:2;"
+            "stroke-dasharray:1 2}\n"
+            "text.marker-label{font-size:11px;fill:#222;paint-order:stroke;stroke:#fff;"
+            "stroke-width:3px;stroke-linejoin:round}\n"
             "rect.absorbed{fill:#111}\n"
             "rect.legend{stroke:none}\n"
             "</style>\n",
