@@ -3,6 +3,7 @@
 #include "orthoray/bounds.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
+#include "phase_progress.hpp"
 #include "scene_format_option.hpp"
 #include "stop_at_once.hpp"
 
@@ -19,7 +20,7 @@ namespace {
 
 struct BoundsArgs {
     std::string file, format;
-    bool json = false, no_pieces = false;
+    bool json = false, no_pieces = false, quiet = false;
     double timeout = 0;
 };
 
@@ -89,10 +90,16 @@ Command add_bounds(CLI::App& app) {
     cmd->add_flag("--json", args->json, "print one JSON object (big integers exact)");
     cmd->add_flag("--no-pieces", args->no_pieces, "do not build the 2D piece tables");
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the computation");
+    cmd->add_flag("--quiet", args->quiet,
+                  "no progress line (it is shown on long runs only when stderr is a terminal)");
     return [args, timeout] {
         stop_at_once(timeout->count() > 0 ? std::optional<double>(args->timeout) : std::nullopt);
+        PhaseProgress progress("bounds", !args->quiet);
+        progress.phase("reading " + args->file);
         const Scene scene = load_scene(args->file, scene_format_named(args->format));
+        progress.phase("computing the bounds");
         const StateBounds b = compute_bounds(scene, !args->no_pieces);
+        progress.finish();
         if (args->json)
             print_json(b);
         else

@@ -3,6 +3,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
 #include "output_file.hpp"
+#include "phase_progress.hpp"
 #include "scene_format_option.hpp"
 #include "stop_at_once.hpp"
 
@@ -15,17 +16,22 @@ namespace {
 struct ConvertArgs {
     std::string in, out, from, to;
     double timeout = 0;
+    bool quiet = false;
 };
 
 int run(const ConvertArgs& args, const CLI::Option* timeout) {
     stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
+    PhaseProgress progress("convert", !args.quiet);
+    progress.phase("reading " + args.in);
     const Scene scene = load_scene(args.in, scene_format_named(args.from));
     const bool json =
         resolve_scene_format(args.out, scene_format_named(args.to)) == SceneFormat::json;
+    progress.phase("writing " + args.out);
     const std::string text = json ? write_scene_json(scene) : write_scene(scene);
     OutputFile out(args.out, {args.in}, "the scene");
     out.stream() << text;
     out.commit();
+    progress.finish();
     return yes;
 }
 
@@ -46,6 +52,8 @@ Command add_convert(CLI::App& app) {
     add_scene_format_option(cmd, args->from, "--from", "IN");
     add_scene_format_option(cmd, args->to, "--to", "OUT");
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the conversion");
+    cmd->add_flag("--quiet", args->quiet,
+                  "no progress line (it is shown on long runs only when stderr is a terminal)");
     return [args, timeout] { return run(*args, timeout); };
 }
 

@@ -60,16 +60,108 @@ private:
 };
 
 std::string scene_summary(const std::string& file, const Scene& scene) {
-    std::size_t absorbers = 0;
-    for (const Element& e : scene.elements) absorbers += e.kind == ElementKind::absorber;
-    return std::filesystem::path(file).filename().string() + ": " + std::to_string(scene.dim) +
-           "D, " + std::to_string(scene.elements.size() - absorbers) + " mirrors, " +
-           std::to_string(absorbers) + " absorbers";
+    std::size_t absorbers = 0, splitters = 0, one_sided = 0;
+    for (const Element& e : scene.elements) {
+        absorbers += e.kind == ElementKind::absorber;
+        splitters += e.kind == ElementKind::splitter;
+        one_sided += e.one_sided();
+    }
+    std::string text = std::filesystem::path(file).filename().string() + ": " +
+                       std::to_string(scene.dim) + "D, " +
+                       std::to_string(scene.elements.size() - absorbers - splitters) +
+                       " mirrors, " + std::to_string(absorbers) + " absorbers";
+    if (splitters > 0) text += ", " + std::to_string(splitters) + " splitters";
+    if (one_sided > 0) text += ", " + std::to_string(one_sided) + " one-sided";
+    if (scene.rays.size() > 1) text += ", " + std::to_string(scene.rays.size()) + " rays";
+    if (scene.targets.size() > 1) text += ", " + std::to_string(scene.targets.size()) + " targets";
+    return text;
+}
+
+// How to read the new elements, when the scene has them.
+std::optional<std::string> element_key(const Scene& scene) {
+    bool splitters = false, one_sided = false;
+    for (const Element& e : scene.elements) {
+        splitters = splitters || e.kind == ElementKind::splitter;
+        one_sided = one_sided || e.one_sided();
+    }
+    if (!splitters && !one_sided) return std::nullopt;
+    std::string key = "key: ";
+    if (splitters) key += "splitters teal, dashed";
+    if (splitters && one_sided) key += "; ";
+    if (one_sided) key += "one-sided elements ticked on the side they act on";
+    return key;
 }
 
 std::string verdict_line(const std::string& answer, Reason reason, const Integer& reflections) {
     return "answer " + answer + ", reason " + to_string(reason) + ", " + reflections.get_str() +
            (reason == Reason::cycle ? " reflections a period" : " reflections");
+}
+
+// Each target's status for its marker: the illumination answer's, or a
+// single trajectory's read as one target (hit: lit; another answer: unlit).
+std::vector<TargetAnswer> target_statuses(const Answer& answer) {
+    if (answer.illumination()) return answer.targets;
+    TargetAnswer target;
+    if (answer.decided())
+        target.status = answer.yes() ? TargetAnswer::Status::lit : TargetAnswer::Status::unlit;
+    return {target};
+}
+
+std::string lit_line(const Answer& answer) {
+    std::size_t lit = 0;
+    std::string unlit, unknown;
+    for (std::size_t t = 0; t < answer.targets.size(); ++t) {
+        const std::string name = std::to_string(t + 1);
+        switch (answer.targets[t].status) {
+        case TargetAnswer::Status::lit:
+            ++lit;
+            break;
+        case TargetAnswer::Status::unlit:
+            unlit += (unlit.empty() ? "" : ", ") + name;
+            break;
+        case TargetAnswer::Status::unknown:
+            unknown += (unknown.empty() ? "" : ", ") + name;
+            break;
+        }
+    }
+    std::string line = "targets: " + std::to_string(lit) + " of " +
+                       std::to_string(answer.targets.size()) + " lit (gold)";
+    if (!unlit.empty()) line += "; unlit (grey, dashed): " + unlit;
+    if (!unknown.empty()) line += "; unknown (dotted): " + unknown;
+    return line;
+}
+
+// Every branch of every ray, shaded by reflections so far, and each target
+// marked lit or unlit from solve(): for scenes with splitters, one-sided
+// elements, or several rays or targets (docs/render.md).
+void draw_branches(const Scene& scene, const RenderArgs& args, SceneRenderer& renderer) {
+    // For the progress line only: stop requests end the process at once.
+    SolveMonitor progress(scene, std::nullopt, !args.quiet, "states");
+    const BranchWalk walk = walk_branches(scene, renderer, args.steps, &progress);
+    SolveOptions options;
+    options.max_steps = args.steps;
+    options.monitor = &progress;
+    const Answer answer = solve(scene, options);
+    progress.erase_progress();
+    renderer.mark_targets(target_statuses(answer));
+    if (answer.decided())
+        renderer.add_caption(
+            answer.illumination() ? std::string("answer ") + answer_word(answer) + ", reason " +
+                                        to_string(answer.reason)
+            : answer.reason == Reason::cycle && answer.tail > 0
+                ? "answer no, reason cycle, tail " + answer.tail.get_str() + ", period " +
+                      answer.period().get_str()
+                : verdict_line(answer_word(answer), answer.reason, answer.reflections));
+    else
+        renderer.add_caption("answer unknown: the solver stopped at --steps " +
+                             std::to_string(args.steps) + " (--steps N goes further)");
+    if (answer.illumination()) renderer.add_caption(lit_line(answer));
+    if (const std::optional<std::string> key = element_key(scene)) renderer.add_caption(*key);
+    renderer.add_caption(
+        walk.complete ? "branches: all " + std::to_string(walk.states) +
+                            " reachable states drawn, shaded by reflections so far"
+                      : "branches: the first " + std::to_string(walk.states) +
+                            " states drawn, fewest reflections first (--steps N draws more)");
 }
 
 // Runs `rsvg-convert -o png svg` without a shell.
@@ -134,7 +226,15 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
     SceneRenderer renderer(scene);
     renderer.add_caption(scene_summary(args.file, scene));
     PathEnd end;
-    if (!args.certificate.empty()) {
+    const bool branches = !scene.single_trajectory() || scene.has_one_sided();
+    if (branches && !args.certificate.empty())
+        throw UsageError("found --certificate for a scene with splitters, one-sided elements or "
+                         "several rays or targets, expected a scene of one two-sided trajectory "
+                         "(such scenes have no certificates yet; render draws their branches "
+                         "without one)");
+    if (branches) {
+        draw_branches(scene, args, renderer);
+    } else if (!args.certificate.empty()) {
         const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
         std::optional<std::uint64_t> limit;
         if (steps->count() > 0) limit = args.steps;
@@ -169,7 +269,7 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
                                  " reflections are drawn (--steps N draws more)");
         end = {answer.reason, path.last_direction()};
     }
-    renderer.finish(end);
+    if (!branches) renderer.finish(end);
     write_picture(renderer, args);
     std::cout << "wrote " << args.out << " (" << renderer.segments() << " segments"
               << (renderer.thinned() ? ", thinned" : "") << ")\n";
@@ -183,7 +283,11 @@ Command add_render(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "render", "Draw the scene and the ray's path: SVG, or PNG when OUT ends in .png\n"
                   "(through rsvg-convert). 2D scenes get one view; 3D scenes get the xy, xz\n"
-                  "and yz projections and an oblique view. The caption gives the answer.\n\n"
+                  "and yz projections and an oblique view. The caption gives the answer.\n"
+                  "Scenes with splitters, one-sided elements, or several rays or targets are\n"
+                  "drawn as every branch of every ray (each reachable state once, at most\n"
+                  "--steps of them), shaded by reflections so far; splitters dashed, ticks on\n"
+                  "the side a one-sided element acts on, targets gold when lit, grey when not.\n\n"
                   "Example:\n"
                   "  orthoray render instances/2d/box-corner-3x5.scene -o box.svg\n"
                   "  orthoray solve maze.scene --certificate maze.cert\n"
@@ -199,7 +303,7 @@ Command add_render(CLI::App& app) {
     CLI::Option* steps =
         cmd->add_option("--steps", args->steps,
                         "draw the first N segments: without --certificate, solve with at most N "
-                        "reflections (default 1000)")
+                        "reflections (default 1000); for branches, walk at most N states")
             ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000'000}));
     add_scene_format_option(cmd, args->format);
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the drawing");

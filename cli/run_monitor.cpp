@@ -62,8 +62,8 @@ void limit_memory(std::uint64_t megabytes) {
 }
 
 SolveMonitor::SolveMonitor(const Scene& scene, std::optional<Clock::time_point> deadline,
-                           bool progress)
-    : scene_(scene), deadline_(deadline), progress_(progress && isatty(STDERR_FILENO)),
+                           bool progress, const char* unit)
+    : scene_(scene), deadline_(deadline), progress_(progress && isatty(STDERR_FILENO)), unit_(unit),
       begin_(Clock::now()),
       // Short runs never show the line.
       next_draw_(begin_ + std::chrono::seconds(1)) {}
@@ -87,7 +87,7 @@ void SolveMonitor::draw(std::uint64_t reflections, Clock::time_point now) {
     if (!state_bound_) state_bound_ = compute_bounds(scene_, false).refined_states;
     // Display only: floating point never reaches an answer.
     const double seconds = std::chrono::duration<double>(now - begin_).count();
-    std::string line = std::to_string(reflections) + " reflections";
+    std::string line = std::to_string(reflections) + " " + unit_;
     char numbers[64];
     std::snprintf(numbers, sizeof numbers, ", %.3g/s, %.1f s", reflections / seconds, seconds);
     line += numbers;

@@ -33,8 +33,10 @@ class SolveMonitor final : public RunMonitor {
 public:
     using Clock = std::chrono::steady_clock;
     // `deadline`: when to stop with Limit::time. `progress`: draw the
-    // progress line (only when stderr is a terminal).
-    SolveMonitor(const Scene& scene, std::optional<Clock::time_point> deadline, bool progress);
+    // progress line (only when stderr is a terminal). `unit`: what the
+    // count polled means ("reflections", or "states" for a search).
+    SolveMonitor(const Scene& scene, std::optional<Clock::time_point> deadline, bool progress,
+                 const char* unit = "reflections");
     ~SolveMonitor() override;
     SolveMonitor(const SolveMonitor&) = delete;
     SolveMonitor& operator=(const SolveMonitor&) = delete;
@@ -47,6 +49,7 @@ private:
     const Scene& scene_;
     std::optional<Clock::time_point> deadline_;
     bool progress_;
+    const char* unit_;
     Clock::time_point begin_, next_draw_;
     std::optional<Integer> state_bound_; // computed when the line is first drawn
     bool drawn_ = false;

@@ -2,6 +2,7 @@
 
 #include "option_checks.hpp"
 #include "output_file.hpp"
+#include "phase_progress.hpp"
 
 #include <cmath>
 #include <csignal>
@@ -13,12 +14,16 @@ namespace orthoray::cli {
 namespace {
 
 // Only async-signal-safe calls: write, unlink (inside
-// remove_unfinished_output) and _exit.
+// remove_unfinished_output), a lock-free atomic load and _exit.
 extern "C" void stop_now(int signal) {
     const char* message = signal == SIGALRM ? "orthoray: stopped: --timeout reached\n"
                                             : "orthoray: stopped: interrupted\n";
     remove_unfinished_output();
-    const ssize_t ignored = ::write(STDERR_FILENO, message, std::strlen(message));
+    // The message replaces a progress line rather than trailing it.
+    const char* erase = "\r\033[K";
+    ssize_t ignored = 0;
+    if (progress_line_shown()) ignored = ::write(STDERR_FILENO, erase, std::strlen(erase));
+    ignored = ::write(STDERR_FILENO, message, std::strlen(message));
     (void)ignored;
     _exit(3);
 }

@@ -97,6 +97,30 @@ TEST_CASE("solve refuses certificates for the new scenes, writing nothing", "[cl
     }
 }
 
+TEST_CASE("render draws the new scenes, and refuses a certificate for them", "[cli][optics]") {
+    TempDir dir;
+    for (const std::string& scene : {splitter_scene, rho_scene}) {
+        const std::string file = dir.write("scene.scene", scene);
+        const std::string svg = dir.path("out.svg");
+        const CliResult r = run_cli("render " + quote(file) + " -o " + quote(svg));
+        INFO(r.err);
+        CHECK(r.status == 0);
+        CHECK(r.out.find("wrote ") == 0);
+        const std::string text = slurp(svg);
+        CHECK(text.find("class=\"trajectory\"") != std::string::npos);
+        CHECK(text.find("branches: all ") != std::string::npos);
+        const CliResult refused = run_cli("render " + quote(file) + " --certificate " +
+                                          quote(file) + " -o " + quote(dir.path("no.svg")));
+        CHECK(refused.status == 2);
+        CHECK_FALSE(std::filesystem::exists(dir.path("no.svg")));
+    }
+    // The last one drawn, the rho scene: a single trajectory that cycles
+    // after a tail, its target marked unlit.
+    const std::string rho = slurp(dir.path("out.svg"));
+    CHECK(rho.find("answer no, reason cycle, tail ") != std::string::npos);
+    CHECK(rho.find("class=\"target-unlit\"") != std::string::npos);
+}
+
 TEST_CASE("the .scene writer round-trips splitters, sides and several rays", "[reader][optics]") {
     const std::string text = "dim 3\nsplitter z- 0 x 0 4 y 0 4\nmirror x+ 1 y 0 1 z 0 1\n"
                              "absorber y 2 x 0 1 z 0 1\nray 0 0 0 1 1 1\nray 1 2 3 -1 0 0\n"

@@ -24,6 +24,7 @@
 #include <pty.h>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -353,5 +354,92 @@ TEST_CASE("a long run shows a progress line on a terminal only, and erases it",
     CHECK(seen.substr(seen.size() - 4) == "\r\033[K");
     CHECK(quiet_seen.empty());
     CHECK(slurp(err).empty());
+    fs::remove_all(dir);
+}
+
+namespace {
+
+// `orthoray ARGS...` with stdout to `out` and stderr to the descriptor
+// `err_fd` or else the file `err`.
+pid_t start_command(const std::vector<std::string>& args, const std::string& out,
+                    const std::string& err, int err_fd = -1) {
+    const pid_t child = fork();
+    if (child != 0) return child;
+    const int out_fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (err_fd < 0) err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(out_fd, STDOUT_FILENO);
+    dup2(err_fd, STDERR_FILENO);
+    closefrom(3);
+    std::vector<char*> argv{const_cast<char*>(ORTHORAY_CLI)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(ORTHORAY_CLI, argv.data());
+    _exit(127);
+}
+
+// Writes `text` into the FIFO `path` once its reader has opened it.
+void feed(const fs::path& path, const std::string& text) {
+    const int fd = open(path.c_str(), O_WRONLY);
+    REQUIRE(fd >= 0);
+    CHECK(write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()));
+    close(fd);
+}
+
+} // namespace
+
+TEST_CASE("bounds and convert show a progress line on a terminal only, and erase it",
+          "[limits][cli][slow]") {
+    // Each reads a FIFO that gets its writer only once the terminal shows
+    // the line (after the first second), so the run is long enough without
+    // a large scene. Per command: stderr to a file, to a terminal with
+    // --quiet, and to a terminal; the first two start first, so they are
+    // past their first second too when the line shows.
+    const fs::path dir = fresh_dir("phase-progress");
+    const std::string scene =
+        slurp(orthoray::test::source_path("instances/2d/box-corner-3x5.scene"));
+    for (const std::string command : {"bounds", "convert"}) {
+        INFO(command);
+        std::vector<fs::path> fifos;
+        for (const char* name : {"file", "quiet", "shown"}) {
+            fifos.push_back(dir / (command + "-" + name + ".scene"));
+            REQUIRE(mkfifo(fifos.back().c_str(), 0600) == 0);
+        }
+        auto args = [&](std::size_t i, bool quiet) {
+            std::vector<std::string> a{command, fifos[i].string()};
+            if (command == "convert")
+                a.push_back((dir / (command + std::to_string(i) + ".json")).string());
+            if (quiet) a.push_back("--quiet");
+            return a;
+        };
+        int quiet_terminal = -1, quiet_side = -1, terminal = -1, child_side = -1;
+        REQUIRE(openpty(&quiet_terminal, &quiet_side, nullptr, nullptr, nullptr) == 0);
+        REQUIRE(openpty(&terminal, &child_side, nullptr, nullptr, nullptr) == 0);
+        const std::string out = (dir / "out").string(), err = (dir / "err").string();
+        const pid_t to_file = start_command(args(0, false), out + "0", err);
+        const pid_t quiet = start_command(args(1, true), out + "1", "", quiet_side);
+        close(quiet_side);
+        const pid_t shown = start_command(args(2, false), out + "2", "", child_side);
+        close(child_side);
+        std::string seen = read_terminal(terminal, " s");
+        CHECK(seen.find("orthoray " + command + ": reading ") != std::string::npos);
+        for (const fs::path& fifo : fifos) feed(fifo, scene);
+        seen += read_terminal(terminal);
+        const std::string quiet_seen = read_terminal(quiet_terminal);
+        close(terminal);
+        close(quiet_terminal);
+        for (const pid_t child : {to_file, quiet, shown}) CHECK(exit_status(child) == 0);
+        // The last thing written to the terminal erases the line.
+        REQUIRE(seen.size() >= 4);
+        CHECK(seen.substr(seen.size() - 4) == "\r\033[K");
+        CHECK(quiet_seen.empty());
+        CHECK(slurp(err).empty());
+        if (command == "bounds")
+            for (const char* n : {"0", "1", "2"})
+                CHECK(slurp(out + n).find("refined states   32") != std::string::npos);
+        else
+            for (std::size_t i = 0; i < 3; ++i)
+                CHECK(slurp(dir / ("convert" + std::to_string(i) + ".json")).find("\"dim\"") !=
+                      std::string::npos);
+    }
     fs::remove_all(dir);
 }

@@ -298,3 +298,128 @@ TEST_CASE("a long path is shaded from early to late in a bounded number of bands
     // A key to the shading is drawn.
     CHECK(with_class(p.xml, "rect", "legend").size() == 8);
 }
+
+namespace {
+
+// A scene drawn from walk_branches, its targets marked from solve().
+struct BranchPicture {
+    std::string svg;
+    XmlDocument xml;
+    orthoray::BranchWalk walk;
+    orthoray::Answer answer;
+};
+
+BranchPicture draw_branches(const Scene& scene, std::uint64_t max_states = 1000) {
+    SceneRenderer renderer(scene);
+    BranchPicture p;
+    p.walk = orthoray::walk_branches(scene, renderer, max_states);
+    p.answer = orthoray::solve(scene);
+    renderer.mark_targets(p.answer.targets);
+    std::ostringstream out;
+    renderer.write_svg(out);
+    p.svg = out.str();
+    p.xml = read_xml(p.svg);
+    return p;
+}
+
+// Records what walk_branches hands on.
+struct SegmentRecorder : orthoray::BranchSink {
+    std::vector<orthoray::BranchSegment> segments;
+    void segment(const orthoray::BranchSegment& s) override { segments.push_back(s); }
+};
+
+// By hand: from (1, 1) along (1, 1) the ray meets the splitter x = 2 at
+// (2, 2) (0 reflections). Through it, it goes on to the mirror y = 3 at
+// (3, 3) (0 reflections), reflects to (1, -1) and escapes (1 reflection).
+// Reflected by the splitter it goes along (-1, 1) to the absorber x = 0 at
+// (0, 4) (1 reflection). Four states, four segments, in two shades; target
+// (1, 3) is on the absorbed branch, (3, 3) at the mirror, (4, 4) on none.
+const char* splitter_scene = "dim 2\n"
+                             "splitter x 2 y 0 4\n"
+                             "absorber x 0 y 0 4\n"
+                             "mirror y 3 x 2 4\n"
+                             "ray 1 1 1 1\n"
+                             "target 1 3\n"
+                             "target 3 3\n"
+                             "target 4 4\n";
+
+} // namespace
+
+TEST_CASE("walk_branches walks every state once, fewest reflections first", "[render][optics]") {
+    const Scene scene = orthoray::read_scene(splitter_scene, "split.scene");
+    SegmentRecorder r;
+    const orthoray::BranchWalk walk = orthoray::walk_branches(scene, r, 1000);
+    CHECK(walk.complete);
+    CHECK(walk.states == 4);
+    REQUIRE(r.segments.size() == 4);
+    std::vector<std::uint64_t> reflections;
+    for (const auto& s : r.segments) reflections.push_back(s.reflections);
+    CHECK(reflections == std::vector<std::uint64_t>{0, 0, 1, 1});
+    CHECK(r.segments[0].to == orthoray::Vector{2, 2, 0});
+    CHECK(r.segments[1].to == orthoray::Vector{3, 3, 0});
+    CHECK(std::count_if(r.segments.begin(), r.segments.end(),
+                        [](const auto& s) { return s.escape; }) == 1);
+    CHECK(std::count_if(r.segments.begin(), r.segments.end(),
+                        [](const auto& s) { return s.absorbed; }) == 1);
+
+    SegmentRecorder capped;
+    const orthoray::BranchWalk cut = orthoray::walk_branches(scene, capped, 3);
+    CHECK_FALSE(cut.complete);
+    CHECK(cut.limit == orthoray::Limit::steps);
+    CHECK(capped.segments.size() == 3);
+
+    struct Stop : orthoray::RunMonitor {
+        std::optional<orthoray::Limit> poll(std::uint64_t) override {
+            return orthoray::Limit::interrupt;
+        }
+    } stop;
+    SegmentRecorder stopped;
+    const orthoray::BranchWalk interrupted = orthoray::walk_branches(scene, stopped, 1000, &stop);
+    CHECK_FALSE(interrupted.complete);
+    CHECK(interrupted.limit == orthoray::Limit::interrupt);
+    CHECK(stopped.segments.empty());
+}
+
+TEST_CASE("a splitter scene draws every branch, splitters dashed, targets lit or unlit",
+          "[render][optics]") {
+    const BranchPicture p = draw_branches(orthoray::read_scene(splitter_scene, "split.scene"));
+    INFO(p.xml.error);
+    REQUIRE(p.xml.well_formed);
+    // One L a segment: the four branches' segments, none merged.
+    CHECK(count_char(trajectory(p.xml), 'L') == 4);
+    CHECK(with_class(p.xml, "path", "trajectory").size() == 2); // 0 and 1 reflections
+    CHECK(with_class(p.xml, "path", "splitter").size() == 1);
+    CHECK(with_class(p.xml, "path", "mirror").size() == 1);
+    CHECK(with_class(p.xml, "path", "absorber").size() == 1);
+    CHECK(with_class(p.xml, "circle", "target-lit").size() == 2);
+    CHECK(with_class(p.xml, "circle", "target-unlit").size() == 1);
+    CHECK(with_class(p.xml, "circle", "target").empty());
+    CHECK(with_class(p.xml, "rect", "absorbed").size() == 1);
+    CHECK(with_class(p.xml, "text", "marker-label").size() == 3); // "target 1" .. "target 3"
+    CHECK(p.svg.find("reflections so far: 0") != std::string::npos);
+}
+
+TEST_CASE("one-sided elements get ticks on the side that acts, in 2D and 3D", "[render][optics]") {
+    // A one-way mirror facing +x: ticks to its right (larger page x).
+    const BranchPicture flat = draw_branches(orthoray::read_scene(
+        "dim 2\nmirror x+ 2 y 0 4\nmirror x 0 y 0 4\nray 3 1 -1 0\ntarget 1 1\n", "one.scene"));
+    REQUIRE(flat.xml.well_formed);
+    const auto ticks = with_class(flat.xml, "path", "side-mirror");
+    REQUIRE(ticks.size() == 1);
+    const std::string& d = ticks[0]->attributes.at("d");
+    CHECK(count_char(d, 'M') >= 5);
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    REQUIRE(std::sscanf(d.c_str(), "M%lf %lfL%lf %lf", &x0, &y0, &x1, &y1) == 4);
+    CHECK(x1 > x0);
+    CHECK(y1 == y0);
+    // 3D: the projections that see the element edge-on and the oblique view
+    // have ticks, the one looking along its normal does not.
+    const BranchPicture deep = draw_branches(orthoray::read_scene(
+        "dim 3\nsplitter z- 2 x 0 4 y 0 4\nray 1 1 0 0 0 1\ntarget 1 1 5\ntarget 2 2 2\n",
+        "deep.scene"));
+    REQUIRE(deep.xml.well_formed);
+    CHECK(with_class(deep.xml, "path", "side-splitter").size() == 3);
+    CHECK(with_class(deep.xml, "path", "face-splitter").size() == 2); // xy and oblique
+    CHECK(with_class(deep.xml, "circle", "target-lit").size() == 4);  // one target, four views
+    CHECK(with_class(deep.xml, "circle", "target-unlit").size() == 4);
+}

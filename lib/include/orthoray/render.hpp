@@ -33,11 +33,48 @@ struct PathEnd {
     Vector direction; // escape: the final ray's direction
 };
 
+// One segment of one branch of a ray (docs/optics.md): from a state's point
+// along its direction to the next event, or to infinity (`escape`), or to an
+// absorption point (`absorbed`).
+struct BranchSegment {
+    Vector from, to; // `to` is unset on escape
+    Vector direction;
+    bool escape = false, absorbed = false;
+    // The least reflections, over every branch of every ray, before `from`.
+    std::uint64_t reflections = 0;
+};
+
+class BranchSink {
+public:
+    virtual ~BranchSink() = default;
+    virtual void segment(const BranchSegment& segment) = 0;
+};
+
+struct BranchWalk {
+    bool complete = false;      // every reachable state was walked
+    Limit limit = Limit::steps; // why not, when incomplete
+    std::uint64_t states = 0;   // states walked (each one segment)
+};
+
+// Walks every branch of every ray, each state (event point, outgoing
+// direction) once, with the reference step and the acting rule of
+// docs/optics.md, and hands each state's segment to `sink` in order of
+// least reflections (a 0-1 breadth-first search: a pass-through costs 0, a
+// reflection 1). At most `max_states` states; the monitor is polled every
+// 10 ms and may stop the walk. Memory grows with the states walked.
+BranchWalk walk_branches(const Scene& scene, BranchSink& sink, std::uint64_t max_states,
+                         RunMonitor* monitor = nullptr);
+
 // Draws one scene: 2D as one view, 3D as the xy, xz and yz projections and
 // an oblique view. The trajectory streams in as a PathSink (from solve() or
 // from a certificate); segments that fall on pixels already drawn are merged,
 // so memory and output stay bounded for 10^7 segments.
-class SceneRenderer : public PathSink {
+//
+// Scenes with splitters, one-sided elements or several rays and targets are
+// drawn from walk_branches instead: the renderer is then a BranchSink, every
+// branch's segments shaded by reflections so far, and mark_targets says
+// which targets are lit.
+class SceneRenderer : public PathSink, public BranchSink {
 public:
     explicit SceneRenderer(const Scene& scene, const RenderOptions& options = {});
     ~SceneRenderer() override;
@@ -49,6 +86,13 @@ public:
     void visit(const Vector& point, const Vector& direction) override;
     // Called once after the last point.
     void finish(const PathEnd& end);
+
+    // A branch's segment (instead of visit and finish), in order of
+    // reflections as walk_branches gives them.
+    void segment(const BranchSegment& segment) override;
+    // Each target's status, in file order, for its marker (lit, unlit or
+    // unknown); without it the targets are drawn plain.
+    void mark_targets(const std::vector<TargetAnswer>& targets);
 
     // A line of the caption, above the views. The renderer adds its own
     // line when it thinned or cut the path.

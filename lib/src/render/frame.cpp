@@ -20,7 +20,8 @@ Frame::Frame(const Scene& scene) : dim_(scene.dim) {
         }
     };
     include(scene.ray().start, true);
-    include(scene.target(), false);
+    for (const Ray& ray : scene.rays) include(ray.start, false);
+    for (const Vector& target : scene.targets) include(target, false);
     for (const Element& e : scene.elements) {
         include(e.lo, false);
         include(e.hi, false);

@@ -16,7 +16,7 @@ using Point3 = std::array<double, 3>;
 
 class Frame {
 public:
-    // The box around the elements, the start point and the target; a side of
+    // The box around the elements, the rays' starts and the targets; a side of
     // length zero gets the longest side's length. It is padded by 4% of the
     // longest side, or of each side when the sides are scaled separately.
     explicit Frame(const Scene& scene);

@@ -31,10 +31,15 @@ public:
 
     explicit PathThinner(std::size_t max_vertices) : max_vertices_(max_vertices) {}
 
-    void add(double x0, double y0, double x1, double y1) {
+    // A segment of a path, banded by its place in the path.
+    void add(double x0, double y0, double x1, double y1) { add_ranked(segments_, x0, y0, x1, y1); }
+
+    // A segment banded by `rank` instead (the reflections before a branch's
+    // segment): ranks must not decrease from one call to the next.
+    void add_ranked(std::uint64_t rank, double x0, double y0, double x1, double y1) {
         const Snapped a = snap(x0, y0), b = snap(x1, y1);
         if (a.x == b.x && a.y == b.y) return; // shorter than a pixel: nothing to see
-        select_band(segments_);
+        select_band(rank);
         ++segments_;
         const std::uint64_t ka = a.key(), kb = b.key();
         const std::uint64_t key = ka < kb ? (ka << 32 | kb) : (kb << 32 | ka);
@@ -93,20 +98,22 @@ private:
         ++merged_;
         pen_.reset(); // the next drawn segment starts a new sub-path
     }
-    // Makes the band of segment `ordinal` current; a new band starts a new
+    // Makes the band of segment `ordinal` (or rank) current; a new band starts a new
     // sub-path, so bands concatenate into valid path data.
     void select_band(std::uint64_t ordinal) {
-        if (ordinal / band_size_ >= max_bands) {
+        // A rank may skip bands (none of its segments was a pixel long), so
+        // the bands are padded before neighbours merge.
+        while (ordinal / band_size_ >= max_bands) {
+            bands_.resize(max_bands);
             for (std::size_t i = 0; i < max_bands / 2; ++i)
                 bands_[i] = bands_[2 * i] + bands_[2 * i + 1];
             bands_.resize(max_bands / 2);
             band_size_ *= 2;
+            current_ = max_bands; // no band: the next one starts a sub-path
         }
         const auto band = static_cast<std::size_t>(ordinal / band_size_);
-        if (band >= bands_.size()) {
-            bands_.resize(band + 1);
-            pen_.reset();
-        }
+        if (band >= bands_.size()) bands_.resize(band + 1);
+        if (band != current_) pen_.reset();
         current_ = band;
     }
     void append(char command, const Snapped& p) {

@@ -4,6 +4,7 @@
 #include "orthoray/render.hpp"
 
 #include "render/frame.hpp"
+#include "render/markers.hpp"
 #include "render/path_thinner.hpp"
 #include "render/svg_writer.hpp"
 #include "render/view_axes.hpp"
@@ -25,9 +26,14 @@ using render::SvgWriter;
 
 constexpr double caption_line = 18;
 
+// Element kinds, in ElementKind's order, as CSS class suffixes.
+constexpr std::array<const char*, 3> kind_class{"mirror", "absorber", "splitter"};
+
 // A view with what is drawn in it.
 struct View : render::ViewPlacement {
-    std::string mirrors, absorbers, faces_mirror, faces_absorber; // SVG path data
+    // SVG path data by element kind: edge-on shapes, faces (3D), and the
+    // ticks on the acting side of one-sided elements.
+    std::array<std::string, 3> edges, faces, ticks;
     std::size_t shapes = 0;
     render::PathThinner path;
 
@@ -66,6 +72,13 @@ struct SceneRenderer::Impl {
     std::optional<Point3> last;
     std::uint64_t visits = 0;
     std::optional<PathEnd> end;
+
+    // Branches (walk_branches) instead of one path.
+    bool branches = false;
+    std::uint64_t branch_segments = 0, most_reflections = 0;
+    std::vector<Point3> absorptions; // at most max_absorptions
+    static constexpr std::size_t max_absorptions = 10'000;
+    std::vector<TargetAnswer> target_status; // empty: targets drawn plain
 
     Impl(const Scene& s, const RenderOptions& o) : scene(s), options(o), frame(s) {
         render::PageLayout page = render::lay_out_views(frame, scene.dim, options.view_size);
@@ -112,16 +125,62 @@ struct SceneRenderer::Impl {
                     d += number_text(corners[i].y);
                 }
                 if (face) d += "Z";
-                if (!seen.insert(d + (e.kind == ElementKind::mirror ? "m" : "a")).second) continue;
+                const auto kind = static_cast<std::size_t>(e.kind);
+                if (!seen.insert(d + kind_class[kind]).second) continue;
                 ++v.shapes;
-                const bool mirror = e.kind == ElementKind::mirror;
-                (face ? (mirror ? v.faces_mirror : v.faces_absorber)
-                      : (mirror ? v.mirrors : v.absorbers)) += d;
+                (face ? v.faces : v.edges)[kind] += d;
+                if (e.one_sided()) side_ticks(v, e, c0, corners, v.ticks[kind]);
             }
         }
         elements_drawn = elements_total;
         for (const View& v : views)
             if (v.shapes >= cap) elements_drawn = std::min(elements_drawn, v.shapes);
+    }
+
+    // Ticks on the side a one-sided element acts on (markers.hpp): toward
+    // where a step off the element to that side lands on the page.
+    static void side_ticks(const View& v, const Element& e, const Point3& corner,
+                           const std::vector<Pixel>& shape, std::string& d) {
+        Point3 off = corner;
+        off[static_cast<std::size_t>(e.axis)] += e.side == Side::plus ? 0.01 : -0.01;
+        d += render::side_ticks(shape, v.map(corner), v.map(off));
+    }
+
+    // Where a ray from `from` along `direction` leaves the frame, in
+    // normalised units; nothing when it does not move in the picture.
+    std::optional<Point3> exit_point(const Point3& from, const Vector& direction) const {
+        double longest = 0;
+        Point3 v{0, 0, 0};
+        for (int j = 0; j < scene.dim; ++j) {
+            v[j] = frame.normalised_component(direction[j], j);
+            longest = std::max(longest, std::abs(v[j]));
+        }
+        if (!(longest > 0) || !std::isfinite(longest)) return std::nullopt;
+        double t = HUGE_VAL;
+        for (int j = 0; j < scene.dim; ++j) {
+            v[j] /= longest;
+            if (v[j] > 0) t = std::min(t, (frame.extent[j] - from[j]) / v[j]);
+            if (v[j] < 0) t = std::min(t, -from[j] / v[j]);
+        }
+        if (!(t > 0) || !std::isfinite(t)) return std::nullopt;
+        Point3 out = from;
+        for (int j = 0; j < 3; ++j) out[j] += t * v[j];
+        return out;
+    }
+
+    void branch(const BranchSegment& s) {
+        branches = true;
+        ++branch_segments;
+        most_reflections = std::max(most_reflections, s.reflections);
+        const Point3 from = frame.normalised(s.from);
+        const std::optional<Point3> to =
+            s.escape ? exit_point(from, s.direction) : frame.normalised(s.to);
+        if (s.absorbed && absorptions.size() < max_absorptions) absorptions.push_back(*to);
+        if (!to) return;
+        for (View& v : views) {
+            const Pixel a = v.map(from), b = v.map(*to);
+            v.path.add_ranked(s.reflections, a.x, a.y, b.x, b.y);
+        }
     }
 
     void segment(const Point3& from, const Point3& to) {
@@ -145,28 +204,15 @@ struct SceneRenderer::Impl {
             segment(*last, frame.normalised(scene.target()));
         } else if (e.reason == Reason::escape) {
             // Out along the final direction to the frame's edge.
-            double longest = 0;
-            Point3 v{0, 0, 0};
-            for (int j = 0; j < scene.dim; ++j) {
-                v[j] = frame.normalised_component(e.direction[j], j);
-                longest = std::max(longest, std::abs(v[j]));
-            }
-            if (!(longest > 0) || !std::isfinite(longest)) return;
-            double t = HUGE_VAL;
-            for (int j = 0; j < scene.dim; ++j) {
-                v[j] /= longest;
-                if (v[j] > 0) t = std::min(t, (frame.extent[j] - (*last)[j]) / v[j]);
-                if (v[j] < 0) t = std::min(t, -(*last)[j] / v[j]);
-            }
-            if (t > 0 && std::isfinite(t)) {
-                Point3 out = *last;
-                for (int j = 0; j < 3; ++j) out[j] += t * v[j];
-                segment(*last, out);
-            }
+            if (const std::optional<Point3> out = exit_point(*last, e.direction))
+                segment(*last, *out);
         }
     }
 
-    std::uint64_t segments() const { return visits > 0 ? visits - 1 : 0; }
+    std::uint64_t segments() const {
+        if (branches) return branch_segments;
+        return visits > 0 ? visits - 1 : 0;
+    }
 
     // The view that shows the most of the path: the 2D view, or in 3D the
     // oblique one, since projections fold retraced segments onto each other
@@ -216,11 +262,19 @@ struct SceneRenderer::Impl {
         auto path = [&](const char* cls, const std::string& d) {
             if (!d.empty()) svg.empty("path", {{"class", cls}, {"d", d}});
         };
-        path("face-mirror", v.faces_mirror);
-        path("face-absorber", v.faces_absorber);
-        path("mirror", v.mirrors);
-        path("absorber", v.absorbers);
+        auto elements = [&] {
+            for (std::size_t kind = 0; kind < kind_class.size(); ++kind)
+                path(("face-" + std::string(kind_class[kind])).c_str(), v.faces[kind]);
+            for (std::size_t kind = 0; kind < kind_class.size(); ++kind) {
+                path(kind_class[kind], v.edges[kind]);
+                path(("side-" + std::string(kind_class[kind])).c_str(), v.ticks[kind]);
+            }
+        };
+        // Branches cover much of the picture, so the elements go on top of
+        // them; a single path is drawn over the elements.
+        if (!branches) elements();
         write_trajectory(svg, v);
+        if (branches) elements();
         write_markers(svg, v);
         svg.close("g");
         svg.close("g");
@@ -240,57 +294,54 @@ struct SceneRenderer::Impl {
         }
     }
 
-    void write_markers(SvgWriter& svg, const View& v) const {
-        // Start: a dot and an arrow along the start direction as this view sees it.
-        const Pixel s = v.map(frame.normalised(scene.ray().start));
-
-        // The direction in normalised units, scaled so its largest part is
-        // 1 (the scene's numbers may be far beyond what a double can divide).
-        const Point3 from = frame.normalised(scene.ray().start);
+    // A ray's start and a point a little ahead along its direction, as
+    // this view sees them. The direction is scaled so its largest part is 1
+    // in normalised units (the scene's numbers may be far beyond what a
+    // double can divide).
+    void write_start(SvgWriter& svg, const View& v, const Ray& ray) const {
+        const Point3 from = frame.normalised(ray.start);
         Point3 ahead = from, d{0, 0, 0};
         double largest = 0;
         for (int j = 0; j < scene.dim; ++j) {
-            d[j] = frame.normalised_component(scene.ray().direction[j], j);
+            d[j] = frame.normalised_component(ray.direction[j], j);
             largest = std::max(largest, std::abs(d[j]));
         }
         if (largest > 0 && std::isfinite(largest))
             for (int j = 0; j < scene.dim; ++j) ahead[j] += 0.01 * d[j] / largest;
-        const Pixel a = v.map(ahead);
-        const double dx = a.x - s.x, dy = a.y - s.y, length = std::hypot(dx, dy);
-        svg.empty(
-            "circle",
-            {{"class", "start"}, {"cx", number_text(s.x)}, {"cy", number_text(s.y)}, {"r", "5"}});
-        if (length > 1e-6 && std::isfinite(length)) {
-            const double ux = dx / length, uy = dy / length, tip_x = s.x + 34 * ux,
-                         tip_y = s.y + 34 * uy;
-            svg.empty("path", {{"class", "start-arrow"},
-                               {"d", render::PathData()
-                                         .move(s.x, s.y)
-                                         .line(tip_x, tip_y)
-                                         .move(tip_x - 9 * ux + 5 * uy, tip_y - 9 * uy - 5 * ux)
-                                         .line(tip_x, tip_y)
-                                         .line(tip_x - 9 * ux - 5 * uy, tip_y - 9 * uy + 5 * ux)
-                                         .text()}});
+        render::write_start(svg, v.map(from), v.map(ahead));
+    }
+
+    // The marker's look: plain without a status (a single trajectory's
+    // picture), else lit, unlit or unknown.
+    const char* target_class(std::size_t index) const {
+        if (index >= target_status.size()) return "target";
+        switch (target_status[index].status) {
+        case TargetAnswer::Status::lit:
+            return "target-lit";
+        case TargetAnswer::Status::unlit:
+            return "target-unlit";
+        case TargetAnswer::Status::unknown:
+            break;
         }
-        if (end && end->reason == Reason::absorbed && last) {
-            const Pixel p = v.map(*last);
-            svg.empty("rect", {{"class", "absorbed"},
-                               {"x", number_text(p.x - 5)},
-                               {"y", number_text(p.y - 5)},
-                               {"width", "10"},
-                               {"height", "10"}});
+        return "target-unknown";
+    }
+
+    void write_markers(SvgWriter& svg, const View& v) const {
+        for (std::size_t r = 0; r < scene.rays.size(); ++r) {
+            write_start(svg, v, scene.rays[r]);
+            if (scene.rays.size() > 1)
+                render::write_label(svg, v, v.map(frame.normalised(scene.rays[r].start)),
+                                    "ray " + std::to_string(r + 1));
         }
-        const Pixel t = v.map(frame.normalised(scene.target()));
-        svg.empty("path", {{"class", "target"},
-                           {"d", render::PathData()
-                                     .move(t.x - 7, t.y - 7)
-                                     .line(t.x + 7, t.y + 7)
-                                     .move(t.x - 7, t.y + 7)
-                                     .line(t.x + 7, t.y - 7)
-                                     .text()}});
-        svg.empty(
-            "circle",
-            {{"class", "target"}, {"cx", number_text(t.x)}, {"cy", number_text(t.y)}, {"r", "9"}});
+        for (const Point3& point : absorptions) render::write_absorbed(svg, v.map(point));
+        if (end && end->reason == Reason::absorbed && last)
+            render::write_absorbed(svg, v.map(*last));
+        for (std::size_t t = 0; t < scene.targets.size(); ++t) {
+            const Pixel at = v.map(frame.normalised(scene.targets[t]));
+            render::write_target(svg, at, target_class(t));
+            if (scene.targets.size() > 1)
+                render::write_label(svg, v, at, "target " + std::to_string(t + 1));
+        }
     }
 
     std::vector<std::string> caption_lines() const {
@@ -319,17 +370,21 @@ struct SceneRenderer::Impl {
 
     // A key to the path's shading at the caption's right: early, the ramp
     // in steps, late.
-    void write_ramp_key(SvgWriter& svg, double caption_height) const {
+    // Branches: on a row of its own below the caption, since their caption
+    // lines are long, reading "reflections so far: 0 [ramp] N".
+    void write_ramp_key(SvgWriter& svg, double caption_height, std::size_t lines) const {
         constexpr int steps = 8;
         constexpr double step_width = 10;
-        const double right = page_width - 12, y = -caption_height + 8;
-        const double ramp_left = right - 28 - steps * step_width;
+        const double y = branches ? -caption_height + 8 + caption_line * static_cast<double>(lines)
+                                  : -caption_height + 8;
+        const double ramp_left = branches ? 150 : page_width - 40 - steps * step_width;
+        const double right = ramp_left + 28 + steps * step_width;
         svg.text("text",
                  {{"class", "legend"},
                   {"x", number_text(ramp_left - 4)},
                   {"y", number_text(y + 10)},
                   {"text-anchor", "end"}},
-                 "path: early");
+                 branches ? "reflections so far: 0" : "path: early");
         for (int i = 0; i < steps; ++i)
             svg.empty("rect", {{"class", "legend"},
                                {"x", number_text(ramp_left + i * step_width)},
@@ -339,13 +394,14 @@ struct SceneRenderer::Impl {
                                {"fill", ramp_colour(i / (steps - 1.0))}});
         svg.text("text",
                  {{"class", "legend"}, {"x", number_text(right - 24)}, {"y", number_text(y + 10)}},
-                 "late");
+                 branches ? std::to_string(most_reflections) : std::string("late"));
     }
 
     void write(std::ostream& out) const {
         const std::vector<std::string> lines = caption_lines();
-        const double caption_height =
-            caption_line * static_cast<double>(std::max<std::size_t>(lines.size(), 1)) + 12;
+        const bool ramp_key = fullest_path().bands().size() > 1;
+        const std::size_t rows = std::max<std::size_t>(lines.size(), 1) + (branches && ramp_key);
+        const double caption_height = caption_line * static_cast<double>(rows) + 12;
         // Thinner lines when there are many elements, so that a maze of
         // 10^5 mirrors is not one blue square.
         const double element_stroke = elements_total <= 200    ? 2
@@ -357,7 +413,7 @@ struct SceneRenderer::Impl {
                                    : drawn <= 1000  ? 1.3
                                    : drawn <= 20000 ? 0.8
                                                     : 0.4;
-        char style[1024];
+        char style[2048];
         std::snprintf(
             style, sizeof style,
             "<style>\n"
@@ -369,19 +425,34 @@ struct SceneRenderer::Impl {
             ".axis-arrow{stroke:#666;stroke-width:1.5}\n"
             ".mirror{fill:none;stroke:#1f5fa8;stroke-width:%g;stroke-linecap:round}\n"
             ".absorber{fill:none;stroke:#111;stroke-width:%g;stroke-dasharray:%g %g}\n"
+            ".splitter{fill:none;stroke:#0e8f8f;stroke-width:%g;stroke-dasharray:%g %g}\n"
             ".face-mirror{fill:#1f5fa8;fill-opacity:0.12;stroke:#1f5fa8;stroke-width:1}\n"
             ".face-absorber{fill:#111;fill-opacity:0.35;stroke:#111;stroke-width:1.5}\n"
+            ".face-splitter{fill:#0e8f8f;fill-opacity:0.08;stroke:#0e8f8f;stroke-width:1;"
+            "stroke-dasharray:5 3}\n"
+            ".side-mirror{stroke:#1f5fa8;stroke-width:1.2}\n"
+            ".side-absorber{stroke:#111;stroke-width:1.2}\n"
+            ".side-splitter{stroke:#0e8f8f;stroke-width:1.2}\n"
             ".trajectory{fill:none;stroke-width:%g;stroke-opacity:0.9;stroke-linejoin:round;"
             "stroke-linecap:round}\n"
             "circle.start{fill:#1a9a3a}\n"
             ".start-arrow{fill:none;stroke:#1a9a3a;stroke-width:2.5}\n"
             "path.target{stroke:#d01c1c;stroke-width:2.5}\n"
             "circle.target{fill:none;stroke:#d01c1c;stroke-width:2}\n"
+            "path.target-lit{stroke:#d01c1c;stroke-width:2.5}\n"
+            "circle.target-lit{fill:#ffd23f;stroke:#d01c1c;stroke-width:2}\n"
+            "path.target-unlit,path.target-unknown{stroke:#666;stroke-width:2}\n"
+            "circle.target-unlit{fill:#fff;fill-opacity:0.7;stroke:#666;stroke-width:2;"
+            "stroke-dasharray:3 2}\n"
+            "circle.target-unknown{fill:#fff;fill-opacity:0.7;stroke:#666;stroke-width:2;"
+            "stroke-dasharray:1 2}\n"
+            "text.marker-label{font-size:11px;fill:#222;paint-order:stroke;stroke:#fff;"
+            "stroke-width:3px;stroke-linejoin:round}\n"
             "rect.absorbed{fill:#111}\n"
             "rect.legend{stroke:none}\n"
             "</style>\n",
             element_stroke, 2 * element_stroke, 3 * element_stroke, 1.5 * element_stroke,
-            path_stroke);
+            1.5 * element_stroke, 4 * element_stroke, 2.5 * element_stroke, path_stroke);
         out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
         SvgWriter svg(out);
         const std::string height = number_text(page_height + caption_height);
@@ -403,7 +474,7 @@ struct SceneRenderer::Impl {
                  {"x", "12"},
                  {"y", number_text(-caption_height + 20 + caption_line * static_cast<double>(i))}},
                 lines[i]);
-        if (fullest_path().bands().size() > 1) write_ramp_key(svg, caption_height);
+        if (ramp_key) write_ramp_key(svg, caption_height, lines.size());
         for (std::size_t i = 0; i < views.size(); ++i) write_view(svg, views[i], i);
         svg.close("svg");
     }
@@ -420,6 +491,14 @@ void SceneRenderer::visit(const Vector& point, const Vector&) {
 
 void SceneRenderer::finish(const PathEnd& end) {
     impl_->finish(end);
+}
+
+void SceneRenderer::segment(const BranchSegment& segment) {
+    impl_->branch(segment);
+}
+
+void SceneRenderer::mark_targets(const std::vector<TargetAnswer>& targets) {
+    impl_->target_status = targets;
 }
 
 void SceneRenderer::add_caption(const std::string& line) {
