@@ -101,6 +101,16 @@ ResultsLog::ResultsLog(const std::string& path, bool resume)
     next_sync_ = std::chrono::steady_clock::now() + std::chrono::seconds(1);
 }
 
+std::vector<std::string> ResultsLog::versions_of(const std::string& source) const {
+    // Keys are source, newline, version: a source's keys are adjacent.
+    std::vector<std::string> versions;
+    const std::string prefix = source + '\n';
+    for (auto it = done_.lower_bound(prefix);
+         it != done_.end() && it->compare(0, prefix.size(), prefix) == 0; ++it)
+        versions.push_back(it->substr(prefix.size()));
+    return versions;
+}
+
 ResultsLog::~ResultsLog() {
     if (fd_ >= 0) ::close(fd_);
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace orthoray::cli {
 
@@ -34,6 +35,8 @@ public:
     ResultsLog& operator=(const ResultsLog&) = delete;
 
     bool done(const std::string& key) const { return done_.count(key) > 0; }
+    // The versions (content hashes) the file holds a result for at `source`.
+    std::vector<std::string> versions_of(const std::string& source) const;
     std::size_t kept() const { return done_.size(); }
     std::uint64_t dropped_bytes() const { return dropped_; }
 

@@ -305,3 +305,37 @@ TEST_CASE("batch shows done, rate, ETA and failures on a terminal, and erases th
     // The line is erased before the summary, which stands alone.
     CHECK(seen.find("\r\033[Kbatch: 151 of 151 instances") != std::string::npos);
 }
+
+#ifdef ORTHORAY_MPI
+TEST_CASE("batch --mpi on two ranks writes the lines a local batch writes", "[batch][cli][mpi]") {
+    const TempDir dir;
+    write_boxes(dir, 40);
+    dir.write("bad.scene", "dim 2\nray 0 0 1 1\n");
+    const std::string scenes = quote(dir.path("")) + ' ' + quote(source_path("instances/2d"));
+    // Open MPI refuses root unless told; CI runs as root.
+    const ShellResult mpi =
+        run_shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MPIEXEC
+                  " -n 2 --oversubscribe \"$ORTHORAY\" batch " +
+                  scenes + " --engine lattice --mpi -o " + quote(dir.path("mpi.jsonl")));
+    CHECK(run_cli("batch " + scenes + " --engine lattice -o " + quote(dir.path("local.jsonl")))
+              .status == 1); // the bad file
+    CHECK(mpi.status == 1);
+    auto answers = [](const std::string& text) {
+        std::multiset<std::string> out;
+        for (const json& line : read_results(text).lines)
+            out.insert(line["path"].get<std::string>() + ' ' + answer_of(line));
+        return out;
+    };
+    const std::multiset<std::string> local = answers(slurp(dir.path("local.jsonl")));
+    const auto curated = std::distance(fs::directory_iterator(source_path("instances/2d")),
+                                       fs::directory_iterator());
+    CHECK(local.size() == 41 + static_cast<std::size_t>(curated));
+    CHECK(answers(slurp(dir.path("mpi.jsonl"))) == local);
+    // Resumed on the ranks, a complete file stays as it is.
+    const std::string before = slurp(dir.path("mpi.jsonl"));
+    run_shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MPIEXEC
+              " -n 2 --oversubscribe \"$ORTHORAY\" batch " +
+              scenes + " --mpi --resume -o " + quote(dir.path("mpi.jsonl")));
+    CHECK(slurp(dir.path("mpi.jsonl")) == before);
+}
+#endif
