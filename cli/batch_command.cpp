@@ -81,6 +81,7 @@ int run(const BatchArgs& args) {
     }
     threads.join();
     log->close();
+    if (tally.done == instances.size()) log->sort_lines(input_order(instances));
     return tally.finish(instances.size(),
                         std::chrono::duration<double>(Clock::now() - begin).count());
 }

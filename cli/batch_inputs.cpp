@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <system_error>
+#include <unordered_map>
 
 namespace orthoray::cli {
 namespace fs = std::filesystem;
@@ -78,6 +80,16 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
         }
     }
     return out;
+}
+
+std::function<std::size_t(const std::string&)>
+input_order(const std::vector<std::string>& instances) {
+    auto places = std::make_shared<std::unordered_map<std::string, std::size_t>>();
+    for (std::size_t i = instances.size(); i-- > 0;) (*places)[instances[i]] = i;
+    return [places, after = instances.size()](const std::string& path) {
+        const auto it = places->find(path);
+        return it == places->end() ? after : it->second;
+    };
 }
 
 } // namespace orthoray::cli

@@ -2,6 +2,7 @@
 // name, in a fixed order (docs/batch.md).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,5 +20,10 @@ bool is_instance_file(const std::string& path);
 // result, not the end of the batch. An argument that does not exist, or a
 // manifest that cannot be read, is a usage error (UsageError).
 std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs);
+
+// An instance's place in `instances` (the first, for a path listed twice);
+// a path not listed comes after all of them.
+std::function<std::size_t(const std::string&)>
+input_order(const std::vector<std::string>& instances);
 
 } // namespace orthoray::cli

@@ -125,6 +125,7 @@ int coordinate(const BatchArgs& args, int ranks) {
     if (progress) std::fputs("\r\033[K", stderr);
     threads.join();
     log->close();
+    if (tally.done == instances.size()) log->sort_lines(input_order(instances));
     return tally.finish(instances.size(),
                         std::chrono::duration<double>(Clock::now() - begin).count());
 }

@@ -6,10 +6,13 @@
 #include <boost/crc.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
+#include <limits>
 #include <unistd.h>
 
 namespace orthoray::cli {
@@ -149,6 +152,33 @@ void ResultsLog::close() {
         cannot_write(path_, error);
     }
     if (::close(fd) != 0) cannot_write(path_, errno);
+}
+
+} // namespace orthoray::cli
+
+namespace orthoray::cli {
+
+void ResultsLog::sort_lines(const std::function<std::size_t(const std::string& path)>& position) {
+    if (standard_output_) return;
+    std::vector<std::pair<std::size_t, std::string>> lines;
+    {
+        std::ifstream in(path_, std::ios::binary);
+        std::string line;
+        while (std::getline(in, line)) {
+            const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+            const auto path = j.is_object() ? j.find("path") : j.end();
+            lines.emplace_back(path != j.end() && path->is_string()
+                                   ? position(path->get<std::string>())
+                                   : std::numeric_limits<std::size_t>::max(),
+                               std::move(line));
+        }
+        if (in.bad()) throw WriteError("cannot read back '" + path_ + "' to sort it");
+    }
+    std::stable_sort(lines.begin(), lines.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    OutputFile sorted(path_, {}, "the results");
+    for (const auto& [where, line] : lines) sorted.stream() << line << '\n';
+    sorted.commit();
 }
 
 } // namespace orthoray::cli

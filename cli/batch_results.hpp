@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -46,6 +47,11 @@ public:
     void append(const std::string& line);
     // Flushes the data to the disk (fdatasync) and closes; throws WriteError.
     void close();
+    // After close(), rewrites the file with its lines stably sorted by
+    // `position` (lines it does not know: last, in their order), through a
+    // temporary file renamed into place, so a complete batch leaves the same
+    // bytes, apart from timings, however many threads or ranks decided it.
+    void sort_lines(const std::function<std::size_t(const std::string& path)>& position);
 
 private:
     std::mutex mutex_;

@@ -106,6 +106,27 @@ TEST_CASE("batch decides every curated instance as solve --json does", "[batch][
     CHECK(paths.size() == results.lines.size());
 }
 
+TEST_CASE("a complete batch leaves its lines in input order, whatever the threads",
+          "[batch][cli]") {
+    const TempDir dir;
+    const std::vector<std::string> boxes = write_boxes(dir, 30);
+    std::string timings_removed[2];
+    for (const int jobs : {1, 2}) {
+        const std::string out = dir.path("r" + std::to_string(jobs) + ".jsonl");
+        REQUIRE(run_cli("batch " + quote(dir.path("")) + " --engine lattice --jobs " +
+                        std::to_string(jobs) + " -o " + quote(out))
+                    .status == 0);
+        const Results results = read_results(slurp(out));
+        REQUIRE(results.lines.size() == boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            CHECK(results.lines[i]["path"] == boxes[i]);
+            timings_removed[jobs - 1] +=
+                results.lines[i]["path"].get<std::string>() + answer_of(results.lines[i]) + '\n';
+        }
+    }
+    CHECK(timings_removed[0] == timings_removed[1]);
+}
+
 TEST_CASE("batch records a bad file as a result and goes on", "[batch][cli]") {
     const TempDir dir;
     const std::string good = dir.write("good.scene", slurp(instance("2d/box-corner-3x5.scene")));
@@ -164,8 +185,11 @@ TEST_CASE("batch --resume decides only what is missing, and again what was edite
     CHECK(run_cli(command + " --resume").status == 0);
     const Results results = read_results(slurp(out));
     REQUIRE(results.lines.size() == 5);
-    CHECK(results.lines.back()["path"] == boxes[0]);
-    CHECK(results.lines.back()["reflections"] == 6);
+    // Sorted in input order, the old line first (the sort is stable).
+    CHECK(results.lines[0]["path"] == boxes[0]);
+    CHECK(results.lines[0]["reflections"] == 2 * 100000 - 1);
+    CHECK(results.lines[1]["path"] == boxes[0]);
+    CHECK(results.lines[1]["reflections"] == 6);
 
     // Without --resume the file starts afresh.
     CHECK(run_cli(command).status == 0);
