@@ -20,7 +20,8 @@ struct GenerateArgs {
     int dim = 2;
     std::int64_t mirrors = 20, range = 1000, denominator = 1, direction_size = 10;
     unsigned bits = 0;
-    std::string absorbers = "0";
+    std::string absorbers = "0", splitters = "0", one_sided = "0";
+    std::int64_t rays = 1, targets = 1;
     bool box = false;
     std::int64_t target_after = 0;
     // box, square
@@ -35,8 +36,8 @@ struct GenerateArgs {
 // Which options each family reads; any other family option is a usage error.
 const std::map<std::string, std::set<std::string>> family_options{
     {"random",
-     {"--dim", "--mirrors", "--absorbers", "--range", "--bits", "--denominator", "--box",
-      "--target-after", "--direction-size"}},
+     {"--dim", "--mirrors", "--absorbers", "--splitters", "--one-sided", "--rays", "--targets",
+      "--range", "--bits", "--denominator", "--box", "--target-after", "--direction-size"}},
     {"box", {"--sides", "--start", "--direction", "--target", "--target-point"}},
     {"square", {"--direction"}},
     {"hallway", {"--length", "--slope"}},
@@ -78,6 +79,10 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
         f.dim = a.dim;
         f.mirrors = a.mirrors;
         f.absorbers = number(a.absorbers, "--absorbers");
+        f.splitters = number(a.splitters, "--splitters");
+        f.one_sided = number(a.one_sided, "--one-sided");
+        f.rays = a.rays;
+        f.targets = a.targets;
         f.range = given("--bits") ? std::int64_t{1} << a.bits : a.range;
         f.denominator = a.denominator;
         f.box = a.box;
@@ -159,9 +164,12 @@ Command add_generate(CLI::App& app) {
         "same bytes on every machine. Where the answer is known in closed form or by\n"
         "construction it is written as a comment '# expect: yes hit N' (or 'no cycle N', ...).\n\n"
         "Families and an example each:\n"
-        "  random          random mirrors (and absorbers), optionally boxed\n"
+        "  random          random mirrors (and absorbers, splitters, one-sided elements),\n"
+        "                  optionally boxed, with one or more rays and targets\n"
         "                    orthoray generate random --dim 2 --mirrors 50 --box --target-after 20 "
         "--seed 7\n"
+        "                    orthoray generate random --mirrors 30 --splitters 1/3 --one-sided 1/4 "
+        "--rays 2 --targets 3 --box\n"
         "  box             the closed mirror box a x b (x c), from the corner 0 at 45 degrees\n"
         "                  (or --start/--direction); target reached, far, generic or a point\n"
         "                    orthoray generate box --sides 3 5 --target far\n"
@@ -189,6 +197,18 @@ Command add_generate(CLI::App& app) {
     cmd->add_option("--mirrors", args->mirrors, "random: number of elements (default 20)");
     cmd->add_option("--absorbers", args->absorbers,
                     "random: the chance an element absorbs, a fraction like 1/10 (default 0)");
+    cmd->add_option("--splitters", args->splitters,
+                    "random: the chance an element that does not absorb is a splitter, a "
+                    "fraction like 1/3 (default 0)");
+    cmd->add_option("--one-sided", args->one_sided,
+                    "random: the chance an element is one-sided (x+ or x-, alike), a fraction "
+                    "(default 0)");
+    cmd->add_option("--rays", args->rays,
+                    "random: the number of rays, 1 to 1000 (default 1), each a random start and "
+                    "direction");
+    cmd->add_option("--targets", args->targets,
+                    "random: the number of targets, 1 to 1000 (default 1), random points; "
+                    "--target-after needs 1 ray, 1 target and no splitters");
     CLI::Option* range =
         cmd->add_option("--range", args->range, "random: coordinates in [0, R] (default 1000)");
     cmd->add_option("--bits", args->bits, "random: coordinates in [0, 2^B] (instead of --range)")

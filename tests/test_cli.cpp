@@ -438,6 +438,18 @@ TEST_CASE("generate writes the same bytes to stdout and -o, and they solve as ex
     CHECK(answer["reflections"].dump() == first.out.substr(at, first.out.find('\n', at) - at));
 }
 
+TEST_CASE("generate random records the optics options in its header", "[cli][generate]") {
+    const CliResult r = run_cli("generate random --mirrors 12 --splitters 1/3 --one-sided 1/4 "
+                                "--rays 2 --targets 3 --box --seed 4");
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    CHECK(starts_with(r.out, "# orthoray generate random --seed 4 --mirrors 12 --splitters 1/3 "
+                             "--one-sided 1/4 --rays 2 --targets 3 --box true\n"));
+    CHECK(r.out == run_cli("generate random --box --targets 3 --rays 2 --one-sided 1/4 "
+                           "--splitters 1/3 --mirrors 12 --seed 4")
+                       .out);
+}
+
 TEST_CASE("generate: each family runs from the command line", "[cli][generate][slow]") {
     for (const char* args : {"box --sides 3 5 --target far", "box --sides 2 3 4 --target generic",
                              "box --sides 4 6 --start 1 0 --direction 1 2 --target-point 1 1",
@@ -472,6 +484,9 @@ TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate][
              "generate random --absorbers 1/100000000000000000000", // a huge denominator
              "generate random --bits 3 --range 9",                  // two ways to say one thing
              "generate random --dim 4",                             // no such dimension
+             "generate random --splitters 2",                       // not a fraction in [0, 1]
+             "generate random --rays 0",                            // no ray
+             "generate random --targets 2 --target-after 3",        // which target?
              "generate square --direction 0 1",                     // a zero component
              "generate hallway --slope -1",                         // a negative slope
              "generate coprime-box --k 0",                          // k too small

@@ -216,3 +216,160 @@ TEST_CASE("read_expectation reads what write_generated writes, and nothing else"
     CHECK_FALSE(read_expectation("# expect: yes hit many\n"));
     CHECK_FALSE(read_expectation("dim 2\n"));
 }
+
+namespace {
+
+struct KindCounts {
+    std::size_t mirrors = 0, absorbers = 0, splitters = 0, plus = 0, minus = 0;
+};
+
+KindCounts count_kinds(const Scene& scene) {
+    KindCounts c;
+    for (const Element& e : scene.elements) {
+        c.mirrors += e.kind == ElementKind::mirror;
+        c.absorbers += e.kind == ElementKind::absorber;
+        c.splitters += e.kind == ElementKind::splitter;
+        c.plus += e.side == Side::plus;
+        c.minus += e.side == Side::minus;
+    }
+    return c;
+}
+
+} // namespace
+
+TEST_CASE("random with splitters, one-sided elements, rays and targets: as asked, and "
+          "deterministic",
+          "[generate][optics]") {
+    RandomFamily f;
+    f.mirrors = 40;
+    f.splitters = 1;
+    f.one_sided = 1;
+    f.rays = 3;
+    f.targets = 4;
+    f.seed = 11;
+    const GeneratedScene all = generate_random(f);
+    const KindCounts every = count_kinds(all.scene);
+    CHECK(every.splitters == 40);
+    CHECK(every.plus + every.minus == 40);
+    CHECK(every.plus > 5); // both sides are drawn
+    CHECK(every.minus > 5);
+    CHECK(all.scene.rays.size() == 3);
+    CHECK(all.scene.targets.size() == 4);
+    CHECK_FALSE(all.expect);
+    for (const Ray& r : all.scene.rays)
+        for (int j = 0; j < 2; ++j) {
+            CHECK(r.start[j] >= 0);
+            CHECK(r.start[j] <= f.range);
+            CHECK(r.direction[j] != 0);
+        }
+
+    // Fractions: an absorber never splits, the kinds come near the chances
+    // asked (400 draws each; the bounds are 5 standard deviations wide), and
+    // the box's faces stay two-sided mirrors.
+    f.mirrors = 400;
+    f.absorbers = Rational(1, 4);
+    f.splitters = Rational(1, 2);
+    f.one_sided = Rational(1, 3);
+    f.box = true;
+    const GeneratedScene mixed = generate_random(f);
+    const KindCounts some = count_kinds(mixed.scene);
+    CHECK(mixed.scene.elements.size() == 404);
+    CHECK(some.absorbers > 100 - 44);
+    CHECK(some.absorbers < 100 + 44);
+    CHECK(some.splitters > 150 - 50);
+    CHECK(some.splitters < 150 + 50);
+    CHECK(some.plus + some.minus > 133 - 48);
+    CHECK(some.plus + some.minus < 133 + 48);
+    for (std::size_t i = 0; i < 4; ++i) {
+        CHECK(mixed.scene.elements[i].kind == ElementKind::mirror);
+        CHECK_FALSE(mixed.scene.elements[i].one_sided());
+    }
+    const std::string text = write_generated(mixed, {"orthoray generate random ..."});
+    CHECK(text.find("# kinds of the random elements: " + std::to_string(some.mirrors - 4) +
+                    " mirrors, " + std::to_string(some.splitters) + " splitters, " +
+                    std::to_string(some.absorbers) + " absorbers; " +
+                    std::to_string(some.plus + some.minus) + " one-sided\n") != std::string::npos);
+    CHECK(text.find("# 3 rays, 4 targets: the illumination question") != std::string::npos);
+
+    // Same seed, same bytes; the text reads back to the same scene.
+    CHECK(text == write_generated(generate_random(f), {"orthoray generate random ..."}));
+    f.seed = 12;
+    CHECK(text != write_generated(generate_random(f), {"orthoray generate random ..."}));
+    const Scene back = read_scene(text);
+    CHECK(write_scene(back) == write_scene(mixed.scene));
+    CHECK(back.rays.size() == 3);
+    CHECK(back.targets.size() == 4);
+
+    // Left at their defaults the new options draw nothing: the scene is the
+    // one the seed gave before they existed (the pinned hash above, too).
+    RandomFamily plain;
+    plain.mirrors = 30;
+    RandomFamily explicit_defaults = plain;
+    explicit_defaults.splitters = 0;
+    explicit_defaults.rays = 1;
+    CHECK(write_generated(generate_random(plain)) ==
+          write_generated(generate_random(explicit_defaults)));
+}
+
+TEST_CASE("random optics scenes: both illumination engines agree on them", "[generate][optics]") {
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        RandomFamily f;
+        f.dim = seed % 3 == 0 ? 3 : 2;
+        f.mirrors = 6;
+        f.range = 12;
+        f.box = true;
+        f.splitters = Rational(1, 2);
+        f.one_sided = Rational(1, 3);
+        f.rays = 1 + static_cast<std::int64_t>(seed % 2);
+        f.targets = 1 + static_cast<std::int64_t>(seed % 3);
+        f.direction_size = 2;
+        f.seed = seed;
+        const Scene scene = read_scene(write_generated(generate_random(f)));
+        INFO(write_scene(scene));
+        const Answer found = solve(scene);
+        SolveOptions graph;
+        graph.engine = Engine::graph;
+        const Answer built = solve(scene, graph);
+        REQUIRE(found.decided());
+        REQUIRE(built.decided());
+        CHECK(found.reason == built.reason);
+        REQUIRE(found.targets.size() == scene.targets.size());
+        REQUIRE(built.targets.size() == scene.targets.size());
+        for (std::size_t t = 0; t < scene.targets.size(); ++t) {
+            CHECK(found.targets[t].status == built.targets[t].status);
+            CHECK(found.targets[t].reflections == built.targets[t].reflections);
+            CHECK(found.targets[t].ray == built.targets[t].ray);
+        }
+    }
+}
+
+TEST_CASE("random one-sided trajectory with the target on it: the constructed answer",
+          "[generate][optics]") {
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        RandomFamily f;
+        f.dim = seed % 4 == 0 ? 3 : 2;
+        f.mirrors = 10;
+        f.range = 40;
+        f.box = seed % 5 != 0;
+        f.one_sided = Rational(1, 2);
+        f.target_after = static_cast<std::int64_t>(seed % 12);
+        f.seed = seed;
+        const GeneratedScene g = generate_random(f);
+        REQUIRE(g.expect);
+        CHECK(g.expect->reflections <= *f.target_after);
+        check_expectation(g, true);
+    }
+    RandomFamily f;
+    f.target_after = 3;
+    f.splitters = Rational(1, 2);
+    CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
+    f.splitters = 0;
+    f.targets = 2;
+    CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
+    f.target_after.reset();
+    f.rays = 0;
+    CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
+    f.rays = 1;
+    f.one_sided = Rational(3, 2);
+    CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
+}

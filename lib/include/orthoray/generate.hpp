@@ -37,11 +37,18 @@ struct GeneratedScene {
     std::vector<std::string> notes; // one-line comments: how it was built, why the answer holds
 };
 
-// `random`: mirrors with random normal axes, offsets and extents.
+// `random`: mirrors with random normal axes, offsets and extents; with
+// splitters, one-sided elements, several rays or several targets as asked
+// (docs/generate.md). Left at their defaults, those draw nothing, so a seed
+// gives the same scene it gave before they existed.
 struct RandomFamily {
     int dim = 2;
     std::int64_t mirrors = 20;
     Rational absorbers = 0;       // the chance that an element absorbs, in [0, 1]
+    Rational splitters = 0;       // the chance that an element that does not absorb splits
+    Rational one_sided = 0;       // the chance that an element is one-sided (+ or - alike)
+    std::int64_t rays = 1;        // rays, each with a random start and direction
+    std::int64_t targets = 1;     // targets, random points (with target_after: rays = targets = 1)
     std::int64_t range = 1000;    // coordinates lie in [0, range]
     std::int64_t denominator = 1; // each number is k / q with q drawn from 1..denominator
     bool box = false;             // also the closed mirror box [0, range]^dim

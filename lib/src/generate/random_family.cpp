@@ -1,9 +1,11 @@
 // The `random` family: random mirrors and absorbers, optionally boxed, and a
 // target either random or placed on the trajectory.
+#include "engine/reference_step.hpp"
 #include "generate/box_faces.hpp"
 #include "orthoray/generate.hpp"
 #include "orthoray/solve.hpp"
 
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -41,9 +43,20 @@ void check(const RandomFamily& f) {
     if (f.dim != 2 && f.dim != 3) throw std::invalid_argument("the dimension must be 2 or 3");
     if (f.mirrors < 0 || f.mirrors > 1'000'000)
         throw std::invalid_argument("the number of mirrors must be in [0, 10^6]");
-    if (f.absorbers < 0 || f.absorbers > 1 || f.absorbers.get_den() > (1 << 20))
-        throw std::invalid_argument(
-            "the absorber fraction must be in [0, 1], with a denominator up to 2^20");
+    auto check_chance = [](const Rational& chance, const std::string& what) {
+        if (chance < 0 || chance > 1 || chance.get_den() > (1 << 20))
+            throw std::invalid_argument(
+                "the " + what + " fraction must be in [0, 1], with a denominator up to 2^20");
+    };
+    check_chance(f.absorbers, "absorber");
+    check_chance(f.splitters, "splitter");
+    check_chance(f.one_sided, "one-sided");
+    if (f.rays < 1 || f.rays > 1000) throw std::invalid_argument("the rays must be 1 to 1000");
+    if (f.targets < 1 || f.targets > 1000)
+        throw std::invalid_argument("the targets must be 1 to 1000");
+    if (f.target_after && (f.rays > 1 || f.targets > 1 || f.splitters > 0))
+        throw std::invalid_argument("the target's segment places one target on one trajectory: "
+                                    "it needs one ray, one target and no splitters");
     if (f.denominator < 1 || f.denominator > (std::int64_t{1} << 20))
         throw std::invalid_argument("the denominator bound must be in [1, 2^20]");
     // Numerators k in [0, range * q] must fit in 64 bits: ranges of 10^18
@@ -61,6 +74,27 @@ void check(const RandomFamily& f) {
                                     "too long: (K + 1) * mirrors must stay below 10^9");
 }
 
+// True with probability `chance` (a fraction with a small denominator), by
+// one draw; nothing is drawn for a chance of 0, so options left at 0 do not
+// disturb the sequence the other numbers come from.
+bool happens(std::mt19937_64& rng, const Rational& chance) {
+    if (chance == 0) return false;
+    const std::int64_t den = chance.get_den().get_si();
+    return uniform(rng, 0, den - 1) < chance.get_num().get_si();
+}
+
+// A start in [0, range]^dim and a direction of nonzero integers in [-D, D].
+Ray random_ray(std::mt19937_64& rng, const RandomFamily& f) {
+    Ray ray;
+    for (int j = 0; j < f.dim; ++j) ray.start[j] = random_number(rng, f, 0, f.range);
+    for (int j = 0; j < f.dim; ++j) {
+        std::int64_t d = uniform(rng, 1, f.direction_size);
+        if (uniform(rng, 0, 1) == 0) d = -d;
+        ray.direction[j] = Rational(Integer(static_cast<long>(d)));
+    }
+    return ray;
+}
+
 } // namespace
 
 GeneratedScene generate_random(const RandomFamily& f) {
@@ -70,6 +104,7 @@ GeneratedScene generate_random(const RandomFamily& f) {
     Scene& scene = out.scene;
     scene.dim = f.dim;
     if (f.box) generate::add_box_faces(scene, std::vector<Rational>(3, Rational(f.range)));
+    const std::size_t first_random = scene.elements.size();
 
     // Mirrors about as long as the gaps between them: side s = range /
     // floor(n^(1/dim)), lengths in [s/2, s], so crossings stay rare.
@@ -93,37 +128,78 @@ GeneratedScene generate_random(const RandomFamily& f) {
         }
         const bool absorber =
             Integer(static_cast<long>(uniform(rng, 0, absorb_den.get_si() - 1))) < absorb_num;
-        scene.add(absorber ? ElementKind::absorber : ElementKind::mirror, axis, offset, extent);
+        // Drawn whether or not the element absorbs, so each element takes
+        // the same number of draws whatever its kind.
+        const bool splitter = happens(rng, f.splitters);
+        const ElementKind kind = absorber   ? ElementKind::absorber
+                                 : splitter ? ElementKind::splitter
+                                            : ElementKind::mirror;
+        Side facing = Side::both;
+        if (happens(rng, f.one_sided)) facing = uniform(rng, 0, 1) == 0 ? Side::plus : Side::minus;
+        scene.add(kind, axis, offset, extent, facing);
     }
-    for (int j = 0; j < f.dim; ++j) scene.ray().start[j] = random_number(rng, f, 0, f.range);
-    for (int j = 0; j < f.dim; ++j) {
-        std::int64_t d = uniform(rng, 1, f.direction_size);
-        if (uniform(rng, 0, 1) == 0) d = -d;
-        scene.ray().direction[j] = Rational(Integer(static_cast<long>(d)));
-    }
+    scene.rays.clear();
+    for (std::int64_t r = 0; r < f.rays; ++r) scene.rays.push_back(random_ray(rng, f));
     out.notes.push_back(
         "random: " + std::to_string(f.mirrors) + " elements" +
         (f.box ? " inside the mirror box [0, " + std::to_string(f.range) + "]" : ""));
+    if (f.splitters > 0 || f.one_sided > 0) {
+        std::size_t counts[3] = {0, 0, 0}, one_sided = 0;
+        for (const Element& e : std::span(scene.elements).subspan(first_random)) {
+            ++counts[static_cast<int>(e.kind)];
+            one_sided += e.one_sided();
+        }
+        out.notes.push_back("kinds of the random elements: " + std::to_string(counts[0]) +
+                            " mirrors, " + std::to_string(counts[2]) + " splitters, " +
+                            std::to_string(counts[1]) + " absorbers; " + std::to_string(one_sided) +
+                            " one-sided");
+    }
 
     if (!f.target_after) {
-        for (int j = 0; j < f.dim; ++j) scene.target()[j] = random_number(rng, f, 0, f.range);
-        out.notes.push_back("target: a random point (answer not known in advance)");
+        scene.targets.clear();
+        for (std::int64_t t = 0; t < f.targets; ++t) {
+            Vector target;
+            for (int j = 0; j < f.dim; ++j) target[j] = random_number(rng, f, 0, f.range);
+            scene.targets.push_back(target);
+        }
+        out.notes.push_back(f.targets == 1
+                                ? "target: a random point (answer not known in advance)"
+                                : "targets: random points (answers not known in advance)");
+        if (!scene.single_trajectory())
+            out.notes.push_back(std::to_string(f.rays) + " rays, " + std::to_string(f.targets) +
+                                " targets: the illumination question (docs/optics.md)");
         return out;
     }
 
     // The trajectory's first k + 1 reflections, from the reference tracer
     // (independent of the default engine the expectation is tested against).
+    const std::uint64_t steps = static_cast<std::uint64_t>(*f.target_after) + 1;
     PathRecorder path;
-    SolveOptions options;
-    options.engine = Engine::reference;
-    options.max_steps = static_cast<std::uint64_t>(*f.target_after) + 1;
-    options.path = &path;
-    Scene probe = scene;
-    probe.target() = Vector{Rational(-1, 3) - f.range, Rational(-1, 7) - f.range, 0};
-    const Answer traced = solve(probe, options);
+    bool escaped = false;
+    if (scene.has_one_sided()) {
+        // solve() streams no path for one-sided elements: walk the tracer's
+        // steps here. A tail and cycle need no care: segment k is on the
+        // trajectory whatever came before it.
+        path.visit(scene.ray().start, scene.ray().direction);
+        for (std::uint64_t i = 0; i < steps; ++i) {
+            const engine::ReferenceEvent e =
+                engine::reference_step(scene, path.points.back(), path.directions.back());
+            escaped = e.escape;
+            if (escaped) break;
+            path.visit(e.point, e.direction);
+            if (e.absorbed) break;
+        }
+    } else {
+        SolveOptions options;
+        options.engine = Engine::reference;
+        options.max_steps = steps;
+        options.path = &path;
+        Scene probe = scene;
+        probe.target() = Vector{Rational(-1, 3) - f.range, Rational(-1, 7) - f.range, 0};
+        escaped = solve(probe, options).reason == Reason::escape;
+    }
     // Segment i runs from points[i] to points[i + 1]; after an escape the last
     // one is the final ray. Take segment k, or the last there is.
-    const bool escaped = traced.reason == Reason::escape;
     const std::size_t segments = path.points.size() - (escaped ? 0 : 1);
     if (segments == 0) throw std::logic_error("generate_random: the trajectory has no segment");
     const std::size_t k =
