@@ -37,6 +37,22 @@ void check(const BatchArgs& args) {
                          "', expected an existing directory");
 }
 
+} // namespace
+
+InstanceList list_instances(const BatchArgs& args) {
+    if (args.generate.empty()) {
+        if (args.inputs.empty())
+            throw UsageError("found no INPUT, expected instance files, directories, manifests or "
+                             "--generate");
+        return InstanceList(expand_inputs(args.inputs));
+    }
+    if (args.seeds.empty()) throw UsageError("found --generate without --seeds");
+    const auto [first, last] = seed_range(args.seeds);
+    return InstanceList(first, last);
+}
+
+namespace {
+
 std::unique_ptr<ResultsLog> open_results(const BatchArgs& args) {
     auto log = args.output.empty() ? std::make_unique<ResultsLog>()
                                    : std::make_unique<ResultsLog>(args.output, args.resume);
@@ -57,7 +73,7 @@ int run(const BatchArgs& args) {
         throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
                          "docs/batch.md)");
 #endif
-    const std::vector<std::string> instances = expand_inputs(args.inputs);
+    const InstanceList instances = list_instances(args);
     const std::unique_ptr<ResultsLog> log = open_results(args);
     if (args.choices.max_memory > 0) limit_memory(args.choices.max_memory);
 
@@ -81,7 +97,8 @@ int run(const BatchArgs& args) {
     }
     threads.join();
     log->close();
-    if (tally.done == instances.size()) log->sort_lines(input_order(instances));
+    if (tally.done == instances.size())
+        log->sort_lines([&](const std::string& name) { return instances.position(name); });
     return tally.finish(instances.size(),
                         std::chrono::duration<double>(Clock::now() - begin).count());
 }
@@ -102,7 +119,16 @@ Command add_batch(CLI::App& app) {
                  "Exit status: 0 every instance decided, 1 some instance was bad input or stopped\n"
                  "at a limit (each is a result line), 2 usage, 3 interrupted (SIGINT, SIGTERM;\n"
                  "--resume goes on), 5 the results could not be written.");
-    cmd->add_option("INPUT", args->inputs, "instance files, directories or manifests")->required();
+    CLI::Option* inputs =
+        cmd->add_option("INPUT", args->inputs, "instance files, directories or manifests");
+    CLI::Option* generate =
+        cmd->add_option("--generate", args->generate,
+                        "instead of INPUT, decide the scenes of 'orthoray generate WORDS', one a "
+                        "seed of --seeds, without writing them (e.g. 'random --dim 2 --mirrors "
+                        "1000 --box'); each result line names the words and its seed")
+            ->excludes(inputs);
+    cmd->add_option("--seeds", args->seeds, "with --generate: the seeds A..B (inclusive) or A")
+        ->needs(generate);
     cmd->add_option("--jobs,-j", args->jobs,
                     "threads (default: every core; under --mpi, one a rank)")
         ->check(CLI::Range(1u, 4096u));

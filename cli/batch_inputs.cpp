@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <sstream>
 #include <system_error>
 #include <unordered_map>
@@ -82,14 +81,50 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
     return out;
 }
 
-std::function<std::size_t(const std::string&)>
-input_order(const std::vector<std::string>& instances) {
-    auto places = std::make_shared<std::unordered_map<std::string, std::size_t>>();
-    for (std::size_t i = instances.size(); i-- > 0;) (*places)[instances[i]] = i;
-    return [places, after = instances.size()](const std::string& path) {
-        const auto it = places->find(path);
-        return it == places->end() ? after : it->second;
+InstanceList::InstanceList(std::vector<std::string> paths) : paths_(std::move(paths)) {
+    for (std::size_t i = paths_.size(); i-- > 0;) places_[paths_[i]] = i;
+}
+
+InstanceList::InstanceList(std::uint64_t first_seed, std::uint64_t last_seed)
+    : generated_(true), first_seed_(first_seed), last_seed_(last_seed) {}
+
+std::size_t InstanceList::size() const {
+    return generated_ ? static_cast<std::size_t>(last_seed_ - first_seed_ + 1) : paths_.size();
+}
+
+std::string InstanceList::name(std::size_t i) const {
+    return generated_ ? std::to_string(first_seed_ + i) : paths_[i];
+}
+
+std::size_t InstanceList::position(const std::string& name) const {
+    if (!generated_) {
+        const auto it = places_.find(name);
+        return it == places_.end() ? size() : it->second;
+    }
+    if (name.empty() || name.size() > 20 ||
+        name.find_first_not_of("0123456789") != std::string::npos)
+        return size();
+    const std::uint64_t seed = std::stoull(name);
+    return seed < first_seed_ || seed > last_seed_ ? size()
+                                                   : static_cast<std::size_t>(seed - first_seed_);
+}
+
+std::pair<std::uint64_t, std::uint64_t> seed_range(const std::string& text) {
+    auto seed = [&](const std::string& digits) {
+        if (digits.empty() || digits.size() > 20 ||
+            digits.find_first_not_of("0123456789") != std::string::npos ||
+            (digits.size() == 20 && digits > "18446744073709551615"))
+            throw UsageError("found --seeds '" + text +
+                             "', expected A..B or A, whole numbers from 0 to 2^64 - 1");
+        return static_cast<std::uint64_t>(std::stoull(digits));
     };
+    const std::size_t dots = text.find("..");
+    const std::uint64_t first = seed(text.substr(0, dots));
+    const std::uint64_t last = dots == std::string::npos ? first : seed(text.substr(dots + 2));
+    if (first > last) throw UsageError("found --seeds '" + text + "', expected A..B with A <= B");
+    if (last - first >= std::uint64_t{1} << 40)
+        throw UsageError("found --seeds '" + text + "', expected at most 2^40 seeds");
+    return {first, last};
 }
 
 } // namespace orthoray::cli

@@ -2,8 +2,10 @@
 // name, in a fixed order (docs/batch.md).
 #pragma once
 
-#include <functional>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace orthoray::cli {
@@ -21,9 +23,33 @@ bool is_instance_file(const std::string& path);
 // manifest that cannot be read, is a usage error (UsageError).
 std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs);
 
-// An instance's place in `instances` (the first, for a path listed twice);
-// a path not listed comes after all of them.
-std::function<std::size_t(const std::string&)>
-input_order(const std::vector<std::string>& instances);
+// The instances of one batch: files, or the seeds of a generator
+// (`--generate WORDS --seeds A..B`), which are never written to disk.
+class InstanceList {
+public:
+    explicit InstanceList(std::vector<std::string> paths);
+    InstanceList(std::uint64_t first_seed, std::uint64_t last_seed);
+
+    std::size_t size() const;
+    bool generated() const { return generated_; }
+    // The file's path, or the seed in decimal: what a result line names.
+    std::string name(std::size_t i) const;
+    // The place of the instance a result line names (the first, for a path
+    // listed twice); size() for one not in the list.
+    std::size_t position(const std::string& name) const;
+
+private:
+    bool generated_ = false;
+    std::vector<std::string> paths_;
+    std::uint64_t first_seed_ = 0, last_seed_ = 0;
+    std::unordered_map<std::string, std::size_t> places_;
+};
+
+struct BatchArgs;
+// What `batch` decides: INPUT expanded, or the seeds of --generate.
+InstanceList list_instances(const BatchArgs& args);
+
+// `A..B` (inclusive) or a single seed `A`, each 0 to 2^64 - 1, A <= B.
+std::pair<std::uint64_t, std::uint64_t> seed_range(const std::string& text);
 
 } // namespace orthoray::cli

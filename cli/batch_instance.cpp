@@ -43,27 +43,24 @@ std::string json_string(const std::string& text) {
     return nlohmann::json(text).dump();
 }
 
-std::string head(const std::string& path, const std::string& hash) {
+std::string file_head(const std::string& path, const std::string& hash) {
     return "{\"path\":" + json_string(path) + ",\"hash\":" + json_string(hash);
 }
 
 // The certificate's file in DIR: the instance's name and content hash, so
 // that instances of the same name in different directories do not collide.
-std::string certificate_path(const std::string& dir, const std::string& instance,
-                             const std::string& hash) {
-    return (std::filesystem::path(dir) /
-            (std::filesystem::path(instance).filename().string() + '.' + hash + ".cert"))
-        .string();
+std::string certificate_path(const std::string& dir, const std::string& name) {
+    return (std::filesystem::path(dir) / (name + ".cert")).string();
 }
 
-Outcome finish(const std::string& path, const std::string& hash, const Answer& answer,
-               const std::string& engine, Clock::time_point begin) {
+Outcome finish(const std::string& head, const Answer& answer, const std::string& engine,
+               Clock::time_point begin) {
     const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
     const Ending ending = !answer.decided() ? Ending::limit
                           : answer.yes()    ? Ending::yes
                                             : Ending::no;
     const int status = ending == Ending::limit ? limit : ending == Ending::yes ? yes : no;
-    return {ending, head(path, hash) + ',' + answer_json_members(answer, engine, seconds) +
+    return {ending, head + ',' + answer_json_members(answer, engine, seconds) +
                         ",\"status\":" + std::to_string(status) + '}'};
 }
 
@@ -75,9 +72,21 @@ Answer stopped_by(Limit limit) {
 
 } // namespace
 
-Outcome InstanceDecider::decide(const std::string& path, const DoneCheck& done) const {
+std::string generated_key(const BatchArgs& args, const std::string& seed) {
+    return result_key("generate " + args.generate, seed);
+}
+
+InstanceDecider::InstanceDecider(const BatchArgs& args) : args_(args) {
+    if (!args.generate.empty()) generator_.emplace(args.generate);
+}
+
+Outcome InstanceDecider::decide(const std::string& name, const DoneCheck& done) const {
+    return generator_ ? decide_generated(name, done) : decide_file(name, done);
+}
+
+Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& done) const {
     const auto begin = Clock::now();
-    InstanceMonitor monitor(args_.choices.deadline(begin));
+    const std::optional<Clock::time_point> deadline = args_.choices.deadline(begin);
     // A file that cannot be read has no content to hash; it is keyed as
     // unreadable, so --resume does not retry it while it stays so.
     std::string hash = "unreadable";
@@ -86,28 +95,51 @@ Outcome InstanceDecider::decide(const std::string& path, const DoneCheck& done) 
         const std::string bytes = read_file(path);
         hash = content_hash(bytes);
         if (done(result_key(path, hash))) return {};
-        const ReadStopCheck stop_check(
-            path, [&] { return InterruptGuard::requested() || monitor.past_deadline(); });
+        const ReadStopCheck stop_check(path, [&] {
+            return InterruptGuard::requested() || (deadline && Clock::now() >= *deadline);
+        });
         scene = resolve_scene_format(path, scene_format_named(args_.format)) == SceneFormat::json
                     ? read_scene_json(bytes, path)
                     : read_scene(bytes, path);
     } catch (const InputError& e) {
         if (done(result_key(path, hash))) return {};
-        return {Ending::bad_input, head(path, hash) + ",\"error\":" + json_string(e.what()) +
+        return {Ending::bad_input, file_head(path, hash) + ",\"error\":" + json_string(e.what()) +
                                        ",\"status\":" + std::to_string(bad_input) + '}'};
     } catch (const ReadInterrupted&) {
         if (InterruptGuard::requested()) return {Ending::interrupted, {}};
-        return finish(path, hash, stopped_by(Limit::time), args_.choices.engine, begin);
+        return finish(file_head(path, hash), stopped_by(Limit::time), args_.choices.engine, begin);
     } catch (const std::bad_alloc&) {
-        return finish(path, hash, stopped_by(Limit::memory), args_.choices.engine, begin);
+        return finish(file_head(path, hash), stopped_by(Limit::memory), args_.choices.engine,
+                      begin);
     }
+    return solve_scene(scene, file_head(path, hash),
+                       std::filesystem::path(path).filename().string() + '.' + hash, begin);
+}
+
+Outcome InstanceDecider::decide_generated(const std::string& seed, const DoneCheck& done) const {
+    if (done(generated_key(args_, seed))) return {};
+    const auto begin = Clock::now();
+    const std::string head = "{\"generate\":" + json_string(args_.generate) + ",\"seed\":" + seed;
+    Scene scene;
+    try {
+        scene = generator_->scene(std::stoull(seed));
+    } catch (const std::bad_alloc&) {
+        return finish(head, stopped_by(Limit::memory), args_.choices.engine, begin);
+    }
+    return solve_scene(scene, head, "seed-" + seed, begin);
+}
+
+Outcome InstanceDecider::solve_scene(const Scene& scene, const std::string& head,
+                                     const std::string& certificate_name,
+                                     Clock::time_point begin) const {
+    InstanceMonitor monitor(args_.choices.deadline(begin));
     SolveOptions options = args_.choices.options();
     options.monitor = &monitor;
     std::optional<OutputFile> file;
     std::unique_ptr<CertificateWriter> writer;
     if (!args_.certificates.empty()) {
-        file.emplace(certificate_path(args_.certificates, path, hash),
-                     std::vector<std::string>{path}, "the certificate");
+        file.emplace(certificate_path(args_.certificates, certificate_name),
+                     std::vector<std::string>{}, "the certificate");
         writer = std::make_unique<CertificateWriter>(file->stream(), scene);
         writer->attach(options);
     }
@@ -123,7 +155,7 @@ Outcome InstanceDecider::decide(const std::string& path, const DoneCheck& done) 
         writer->finish(answer);
         file->commit();
     }
-    return finish(path, hash, answer, engine_name(answer, args_.choices.engine), begin);
+    return finish(head, answer, engine_name(answer, args_.choices.engine), begin);
 }
 
 } // namespace orthoray::cli

@@ -69,7 +69,7 @@ std::string receive(const MPI_Status& probed) {
 }
 
 int coordinate(const BatchArgs& args, int ranks) {
-    const std::vector<std::string> instances = expand_inputs(args.inputs);
+    const InstanceList instances = list_instances(args);
     auto log = args.output.empty() ? std::make_unique<ResultsLog>()
                                    : std::make_unique<ResultsLog>(args.output, args.resume);
     const InterruptGuard interrupts;
@@ -105,17 +105,27 @@ int coordinate(const BatchArgs& args, int ranks) {
             tally.count(static_cast<Ending>(message.at(0)));
             continue;
         }
-        const std::size_t left = instances.size() - std::min(instances.size(), next.load());
-        const std::size_t size =
-            std::clamp<std::size_t>(left / (4 * static_cast<std::size_t>(ranks)), 1, 64);
-        const std::size_t first = InterruptGuard::requested() ? instances.size() : next += size;
+        // The next chunk; an empty one (no work left, or a signal) tells
+        // the rank to stop. Generated instances already in the file are
+        // skipped here, so a chunk is only empty when nothing is left.
         std::string work;
-        for (std::size_t i = first - std::min(first, size); i < std::min(first, instances.size());
-             ++i) {
-            if (InterruptGuard::requested()) break;
-            work += instances[i] + '\0';
-            for (const std::string& hash : log->versions_of(instances[i])) work += hash + ',';
-            work += '\0';
+        while (work.empty() && !InterruptGuard::requested()) {
+            const std::size_t n = instances.size();
+            const std::size_t left = n - std::min(n, next.load());
+            const std::size_t size =
+                std::clamp<std::size_t>(left / (4 * static_cast<std::size_t>(ranks)), 1, 64);
+            const std::size_t end = next += size;
+            if (end - size >= n) break;
+            for (std::size_t i = end - size; i < std::min(end, n); ++i) {
+                const std::string name = instances.name(i);
+                if (instances.generated() && log->done(generated_key(args, name))) {
+                    tally.count(Ending::skipped);
+                    continue;
+                }
+                work += name + '\0';
+                for (const std::string& hash : log->versions_of(name)) work += hash + ',';
+                work += '\0';
+            }
         }
         if (work.empty()) --working;
         send(work, status.MPI_SOURCE, chunk);
@@ -125,7 +135,8 @@ int coordinate(const BatchArgs& args, int ranks) {
     if (progress) std::fputs("\r\033[K", stderr);
     threads.join();
     log->close();
-    if (tally.done == instances.size()) log->sort_lines(input_order(instances));
+    if (tally.done == instances.size())
+        log->sort_lines([&](const std::string& name) { return instances.position(name); });
     return tally.finish(instances.size(),
                         std::chrono::duration<double>(Clock::now() - begin).count());
 }

@@ -42,6 +42,18 @@ std::optional<std::string> key_of(const std::string& line) {
     return std::nullopt;
 }
 
+// What a result line names its instance by: the path, or the seed of a
+// generated instance ("" when it names neither).
+std::string name_of(const std::string& line) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (!j.is_object()) return {};
+    if (const auto path = j.find("path"); path != j.end() && path->is_string())
+        return path->get<std::string>();
+    if (const auto seed = j.find("seed"); seed != j.end() && seed->is_number_unsigned())
+        return std::to_string(seed->get<std::uint64_t>());
+    return {};
+}
+
 } // namespace
 
 std::string result_key(const std::string& source, const std::string& version) {
@@ -158,19 +170,14 @@ void ResultsLog::close() {
 
 namespace orthoray::cli {
 
-void ResultsLog::sort_lines(const std::function<std::size_t(const std::string& path)>& position) {
+void ResultsLog::sort_lines(const std::function<std::size_t(const std::string& name)>& position) {
     if (standard_output_) return;
     std::vector<std::pair<std::size_t, std::string>> lines;
     {
         std::ifstream in(path_, std::ios::binary);
         std::string line;
         while (std::getline(in, line)) {
-            const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-            const auto path = j.is_object() ? j.find("path") : j.end();
-            lines.emplace_back(path != j.end() && path->is_string()
-                                   ? position(path->get<std::string>())
-                                   : std::numeric_limits<std::size_t>::max(),
-                               std::move(line));
+            lines.emplace_back(position(name_of(line)), std::move(line));
         }
         if (in.bad()) throw WriteError("cannot read back '" + path_ + "' to sort it");
     }

@@ -48,10 +48,10 @@ public:
     // Flushes the data to the disk (fdatasync) and closes; throws WriteError.
     void close();
     // After close(), rewrites the file with its lines stably sorted by
-    // `position` (lines it does not know: last, in their order), through a
+    // `position` of the name each gives (its path, or its seed), through a
     // temporary file renamed into place, so a complete batch leaves the same
     // bytes, apart from timings, however many threads or ranks decided it.
-    void sort_lines(const std::function<std::size_t(const std::string& path)>& position);
+    void sort_lines(const std::function<std::size_t(const std::string& name)>& position);
 
 private:
     std::mutex mutex_;

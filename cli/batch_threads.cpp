@@ -4,7 +4,7 @@
 
 namespace orthoray::cli {
 
-BatchThreads::BatchThreads(unsigned jobs, const std::vector<std::string>& instances,
+BatchThreads::BatchThreads(unsigned jobs, const InstanceList& instances,
                            std::atomic<std::size_t>& next, const InstanceDecider& decider,
                            const DoneCheck& done, Record record)
     : instances_(instances), next_(next), decider_(decider), done_(done),
@@ -23,7 +23,7 @@ void BatchThreads::work() {
         while (!InterruptGuard::requested() && !failed_) {
             const std::size_t i = next_++;
             if (i >= instances_.size()) break;
-            const Outcome outcome = decider_.decide(instances_[i], done_);
+            const Outcome outcome = decider_.decide(instances_.name(i), done_);
             if (outcome.ending == Ending::interrupted) break;
             record_(outcome);
         }

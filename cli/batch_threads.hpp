@@ -4,6 +4,7 @@
 // magnitude; a fixed split would leave threads idle).
 #pragma once
 
+#include "batch_inputs.hpp"
 #include "batch_instance.hpp"
 
 #include <atomic>
@@ -24,11 +25,10 @@ public:
     // from the threads; it must be thread-safe.
     using Record = std::function<void(const Outcome&)>;
 
-    // Starts `jobs` threads deciding instances[next++] until the list is
+    // Starts `jobs` threads deciding instances.name(next++) until the list is
     // exhausted, a signal comes, or a thread fails (a write error).
-    BatchThreads(unsigned jobs, const std::vector<std::string>& instances,
-                 std::atomic<std::size_t>& next, const InstanceDecider& decider,
-                 const DoneCheck& done, Record record);
+    BatchThreads(unsigned jobs, const InstanceList& instances, std::atomic<std::size_t>& next,
+                 const InstanceDecider& decider, const DoneCheck& done, Record record);
     ~BatchThreads();
     BatchThreads(const BatchThreads&) = delete;
     BatchThreads& operator=(const BatchThreads&) = delete;
@@ -41,7 +41,7 @@ public:
 private:
     void work();
 
-    const std::vector<std::string>& instances_;
+    const InstanceList& instances_;
     std::atomic<std::size_t>& next_;
     const InstanceDecider& decider_;
     const DoneCheck& done_;

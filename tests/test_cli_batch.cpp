@@ -355,6 +355,24 @@ TEST_CASE("batch --mpi on two ranks writes the lines a local batch writes", "[ba
                                        fs::directory_iterator());
     CHECK(local.size() == 41 + static_cast<std::size_t>(curated));
     CHECK(answers(slurp(dir.path("mpi.jsonl"))) == local);
+    // Generated instances spread over the ranks: the same lines too.
+    // Double quotes: run_shell puts the whole script in single quotes.
+    const std::string words = "\"random --mirrors 8 --box\"";
+    const ShellResult generated_on_ranks =
+        run_shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MPIEXEC
+                  " -n 2 --oversubscribe \"$ORTHORAY\" batch --generate " +
+                  words + " --seeds 1..60 --mpi -o " + quote(dir.path("g-mpi.jsonl")));
+    CAPTURE(generated_on_ranks.err);
+    CHECK(generated_on_ranks.status == 0);
+    run_cli("batch --generate " + words + " --seeds 1..60 -o " + quote(dir.path("g.jsonl")));
+    auto generated = [](const std::string& text) {
+        std::string out;
+        for (const json& line : read_results(text).lines)
+            out += line["seed"].dump() + ' ' + answer_of(line) + '\n';
+        return out;
+    };
+    CHECK(generated(slurp(dir.path("g-mpi.jsonl"))) == generated(slurp(dir.path("g.jsonl"))));
+    CHECK(read_results(slurp(dir.path("g.jsonl"))).lines.size() == 60);
     // Resumed on the ranks, a complete file stays as it is.
     const std::string before = slurp(dir.path("mpi.jsonl"));
     run_shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MPIEXEC
@@ -363,3 +381,38 @@ TEST_CASE("batch --mpi on two ranks writes the lines a local batch writes", "[ba
     CHECK(slurp(dir.path("mpi.jsonl")) == before);
 }
 #endif
+
+TEST_CASE("batch --generate decides each seed's scene as generate then solve would",
+          "[batch][cli]") {
+    const TempDir dir;
+    const std::string words = "random --dim 2 --mirrors 12 --box --absorbers 1/10";
+    const std::string out = dir.path("g.jsonl");
+    const std::string command =
+        "batch --generate " + quote(words) + " --seeds 40..69 --jobs 2 -o " + quote(out);
+    REQUIRE(run_cli(command).status == 0);
+    const Results results = read_results(slurp(out));
+    REQUIRE(results.lines.size() == 30);
+    for (std::size_t i = 0; i < results.lines.size(); ++i) {
+        const json& line = results.lines[i];
+        const std::uint64_t seed = 40 + i; // sorted in seed order
+        CHECK(line["seed"] == seed);
+        CHECK(line["generate"] == words);
+        const std::string scene = dir.write(
+            "s.scene", run_cli("generate " + words + " --seed " + std::to_string(seed)).out);
+        const CliResult solve = run_cli("solve --json " + quote(scene));
+        json expected = json::parse(solve.out);
+        expected["status"] = solve.status;
+        json got = line;
+        got.erase("generate");
+        got.erase("seed");
+        CHECK(answer_of(got) == answer_of(expected));
+    }
+    // Resumed over more seeds, only the new ones are decided.
+    const CliResult more =
+        run_cli("batch --generate " + quote(words) + " --seeds 40..74 --resume -o " + quote(out));
+    CHECK(more.err.find(", 30 already in the results") != std::string::npos);
+    CHECK(read_results(slurp(out)).lines.size() == 35);
+    CHECK(run_cli("batch --generate " + quote(words) + " --seeds 3..2").status == 2);
+    CHECK(run_cli("batch --generate 'random --seed 4' --seeds 1").status == 2);
+    CHECK(run_cli("batch --generate 'random --frobnicate' --seeds 1").status == 2);
+}
