@@ -4,7 +4,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "orthoray/scene.hpp"
+
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 namespace orthoray::cli {
@@ -28,5 +32,24 @@ Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);
 Command add_render(CLI::App& app);
+Command add_batch(CLI::App& app);
+
+struct GenerateArgs;
+
+// The scenes of one `orthoray generate` command line, one a seed, without
+// writing them: what `batch --generate` decides.
+class SceneGenerator {
+public:
+    // `words`: the family and its options as `generate` takes them, without
+    // --seed and -o ("random --dim 2 --mirrors 1000 --box"). Bad words are a
+    // UsageError with generate's own message.
+    explicit SceneGenerator(const std::string& words);
+    Scene scene(std::uint64_t seed) const;
+
+private:
+    std::shared_ptr<CLI::App> parser_;
+    std::shared_ptr<GenerateArgs> args_;
+    CLI::App* cmd_ = nullptr;
+};
 
 } // namespace orthoray::cli

@@ -4,14 +4,15 @@
 #include "orthoray/generate.hpp"
 #include "output_file.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <vector>
 
 namespace orthoray::cli {
-namespace {
 
 struct GenerateArgs {
     std::string family, output;
@@ -32,6 +33,8 @@ struct GenerateArgs {
     // coprime-box, coprime-cuboid
     unsigned k = 4;
 };
+
+namespace {
 
 // Which options each family reads; any other family option is a usage error.
 const std::map<std::string, std::set<std::string>> family_options{
@@ -124,7 +127,9 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
     return generate_coprime_cuboid(a.k, targets.at(a.target));
 }
 
-int run(const GenerateArgs& args, const CLI::App& cmd) {
+// The command line that makes this scene again, for the file's header;
+// refuses an option the family does not take.
+std::string checked_header(const GenerateArgs& args, const CLI::App& cmd) {
     const std::set<std::string>& allowed = family_options.at(args.family);
     std::string header = "orthoray generate " + args.family;
     for (const CLI::Option* option : cmd.get_options()) {
@@ -137,13 +142,20 @@ int run(const GenerateArgs& args, const CLI::App& cmd) {
         header += ' ' + name;
         for (const std::string& word : option->results()) header += ' ' + word;
     }
-    GeneratedScene generated;
+    return header;
+}
+
+GeneratedScene checked_build(const GenerateArgs& args, const CLI::App& cmd) {
     try {
-        generated = build(args, cmd);
+        return build(args, cmd);
     } catch (const std::invalid_argument& e) {
         throw UsageError(args.family + ": " + e.what());
     }
-    const std::string text = write_generated(generated, {header});
+}
+
+int run(const GenerateArgs& args, const CLI::App& cmd) {
+    const std::string header = checked_header(args, cmd);
+    const std::string text = write_generated(checked_build(args, cmd), {header});
     if (cmd.get_option("--output")->count() == 0) {
         std::cout << text;
         return yes;
@@ -154,10 +166,8 @@ int run(const GenerateArgs& args, const CLI::App& cmd) {
     return yes;
 }
 
-} // namespace
-
-Command add_generate(CLI::App& app) {
-    auto args = std::make_shared<GenerateArgs>();
+// Registers `generate` and its options on `app`, parsed into `args`.
+CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& args) {
     CLI::App* cmd = app.add_subcommand(
         "generate",
         "Write a scene of an instance family (docs/generate.md). The same arguments give the\n"
@@ -238,7 +248,42 @@ Command add_generate(CLI::App& app) {
     cmd->add_option("--slope", args->slope, "hallway: the ray's slope, > 0 (default 1/10)");
     cmd->add_option("--k", args->k,
                     "coprime-box, coprime-cuboid: the sides' bit size k (default 4)");
+    return cmd;
+}
+
+} // namespace
+
+Command add_generate(CLI::App& app) {
+    auto args = std::make_shared<GenerateArgs>();
+    CLI::App* cmd = register_generate(app, args);
     return [args, cmd] { return run(*args, *cmd); };
+}
+
+SceneGenerator::SceneGenerator(const std::string& words)
+    : parser_(std::make_shared<CLI::App>()), args_(std::make_shared<GenerateArgs>()) {
+    cmd_ = register_generate(*parser_, args_);
+    std::vector<std::string> argv{"generate"};
+    std::istringstream in(words);
+    for (std::string word; in >> word;) argv.push_back(word);
+    // CLI11 takes the words last first.
+    std::reverse(argv.begin(), argv.end());
+    try {
+        parser_->parse(argv);
+    } catch (const CLI::ParseError& e) {
+        throw UsageError("--generate '" + words + "': " + e.what());
+    }
+    if (cmd_->get_option("--seed")->count() > 0 || cmd_->get_option("--output")->count() > 0)
+        throw UsageError("--generate '" + words +
+                         "': the seeds come from --seeds, and nothing is "
+                         "written");
+    checked_header(*args_, *cmd_); // refuses options the family does not take
+    scene(args_->seed);            // the family's own checks, once, before any instance
+}
+
+Scene SceneGenerator::scene(std::uint64_t seed) const {
+    GenerateArgs args = *args_;
+    args.seed = seed;
+    return checked_build(args, *cmd_).scene;
 }
 
 } // namespace orthoray::cli

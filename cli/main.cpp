@@ -4,12 +4,14 @@
 #include "orthoray/version.hpp"
 #include "output_file.hpp"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <gmp.h>
 #include <iostream>
 #include <new>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -43,7 +45,8 @@ int main(int argc, char** argv) {
         "  orthoray solve instances/2d/box-corner-3x5.scene --certificate path.cert\n"
         "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
         "  orthoray generate box --sides 3 5 -o box.scene\n"
-        "  orthoray bounds box.scene\n\n"
+        "  orthoray bounds box.scene\n"
+        "  orthoray batch instances/ -o results.jsonl\n\n"
         "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
         "3 a resource limit (steps, time, memory) or SIGINT/SIGTERM stopped the run first,\n"
         "4 an internal error, 5 an output could not be written (full disk, closed pipe).\n"
@@ -59,17 +62,19 @@ int main(int argc, char** argv) {
     Command bounds = add_bounds(app);
     Command render = add_render(app);
     Command convert = add_convert(app);
+    Command batch = add_batch(app);
 
-    // CLI11 would call an unknown command a missing one; name it instead.
-    auto is_command = [&](const char* word) {
-        for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
-            if (sub->get_name() == word) return true;
-        return false;
-    };
-    if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
-        std::cerr << "orthoray: found the command '" << argv[1]
-                  << "', expected solve, verify, pieces, generate, bounds, render or convert (see "
-                     "'orthoray --help')\n";
+    // CLI11 would call an unknown command a missing one; name it instead,
+    // with the commands as registered, so the list cannot drift.
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+        commands.push_back(sub->get_name());
+    if (argc > 1 && argv[1][0] != '-' &&
+        std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+        std::cerr << "orthoray: found the command '" << argv[1] << "', expected ";
+        for (std::size_t i = 0; i < commands.size(); ++i)
+            std::cerr << (i == 0 ? "" : i + 1 == commands.size() ? " or " : ", ") << commands[i];
+        std::cerr << " (see 'orthoray --help')\n";
         return bad_input;
     }
     try {
@@ -86,6 +91,7 @@ int main(int argc, char** argv) {
                            : app.got_subcommand("bounds")   ? bounds()
                            : app.got_subcommand("render")   ? render()
                            : app.got_subcommand("convert")  ? convert()
+                           : app.got_subcommand("batch")    ? batch()
                                                             : pieces();
         finish_standard_output();
         return status;

@@ -1,0 +1,155 @@
+// orthoray batch INPUT...: decide many instances on every core, one JSON
+// line each, resumable (docs/batch.md). A front end: it reads scenes and
+// calls solve() like `orthoray solve`, once per instance, on N threads that
+// take the next instance as they finish one (instances differ in cost by
+// orders of magnitude, so a fixed split would leave threads idle).
+#include "batch_inputs.hpp"
+#include "batch_instance.hpp"
+#include "batch_mpi.hpp"
+#include "batch_results.hpp"
+#include "batch_tally.hpp"
+#include "batch_threads.hpp"
+#include "commands.hpp"
+#include "run_monitor.hpp"
+#include "scene_format_option.hpp"
+#include "solve_choices.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace orthoray::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void check(const BatchArgs& args) {
+    if (!args.certificates.empty() && args.choices.engine == "graph")
+        throw UsageError("found --engine graph with --certificates, expected another engine "
+                         "(the graph engine writes no certificate)");
+    if (!args.certificates.empty() && !std::filesystem::is_directory(args.certificates))
+        throw UsageError("found --certificates '" + args.certificates +
+                         "', expected an existing directory");
+}
+
+} // namespace
+
+InstanceList list_instances(const BatchArgs& args) {
+    if (args.generate.empty()) {
+        if (args.inputs.empty())
+            throw UsageError("found no INPUT, expected instance files, directories, manifests or "
+                             "--generate");
+        return InstanceList(expand_inputs(args.inputs));
+    }
+    if (args.seeds.empty()) throw UsageError("found --generate without --seeds");
+    const auto [first, last] = seed_range(args.seeds);
+    return InstanceList(first, last);
+}
+
+namespace {
+
+std::unique_ptr<ResultsLog> open_results(const BatchArgs& args) {
+    auto log = args.output.empty() ? std::make_unique<ResultsLog>()
+                                   : std::make_unique<ResultsLog>(args.output, args.resume);
+    if (log->dropped_bytes() > 0)
+        std::fprintf(stderr,
+                     "orthoray: dropped the last %llu bytes of '%s': not a complete result (the "
+                     "end of a run that was stopped)\n",
+                     static_cast<unsigned long long>(log->dropped_bytes()), args.output.c_str());
+    return log;
+}
+
+int run(const BatchArgs& args) {
+    check(args);
+#ifdef ORTHORAY_MPI
+    if (args.mpi) return run_on_ranks(args);
+#else
+    if (args.mpi)
+        throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
+                         "docs/batch.md)");
+#endif
+    const InstanceList instances = list_instances(args);
+    const std::unique_ptr<ResultsLog> log = open_results(args);
+    if (args.choices.max_memory > 0) limit_memory(args.choices.max_memory);
+
+    const InterruptGuard interrupts;
+    const InstanceDecider decider(args);
+    const DoneCheck done = [&](const std::string& key) { return log->done(key); };
+    Tally tally;
+    std::atomic<std::size_t> next{0};
+    const auto begin = Clock::now();
+    BatchThreads threads(args.jobs > 0 ? args.jobs
+                                       : std::max(1u, std::thread::hardware_concurrency()),
+                         instances, next, decider, done, [&](const Outcome& outcome) {
+                             if (!outcome.line.empty()) log->append(outcome.line);
+                             tally.count(outcome.ending);
+                         });
+    // The progress line is redrawn every 100 ms until the last thread ends.
+    if (!args.quiet && isatty(STDERR_FILENO)) {
+        while (!threads.finished_within(std::chrono::milliseconds(100)))
+            tally.draw_progress(instances.size(), begin);
+        std::fputs("\r\033[K", stderr);
+    }
+    threads.join();
+    log->close();
+    if (tally.done == instances.size())
+        log->sort_lines([&](const std::string& name) { return instances.position(name); });
+    return tally.finish(instances.size(),
+                        std::chrono::duration<double>(Clock::now() - begin).count());
+}
+
+} // namespace
+
+Command add_batch(CLI::App& app) {
+    auto args = std::make_shared<BatchArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "batch", "Decide many instances on every core, one JSON line each (docs/batch.md).\n\n"
+                 "Example:\n"
+                 "  orthoray batch instances/ --jobs 2 -o results.jsonl\n"
+                 "  orthoray batch instances/ --resume -o results.jsonl   # after a kill\n\n"
+                 "INPUT: an instance file (.scene, .json), a directory (every instance file below\n"
+                 "it), or a manifest (one path a line; '-' reads it from standard input).\n"
+                 "Each line holds the instance's path and content hash, then the fields of\n"
+                 "'solve --json' and its exit status, or the error message for bad input.\n"
+                 "Exit status: 0 every instance decided, 1 some instance was bad input or stopped\n"
+                 "at a limit (each is a result line), 2 usage, 3 interrupted (SIGINT, SIGTERM;\n"
+                 "--resume goes on), 5 the results could not be written.");
+    CLI::Option* inputs =
+        cmd->add_option("INPUT", args->inputs, "instance files, directories or manifests");
+    CLI::Option* generate =
+        cmd->add_option("--generate", args->generate,
+                        "instead of INPUT, decide the scenes of 'orthoray generate WORDS', one a "
+                        "seed of --seeds, without writing them (e.g. 'random --dim 2 --mirrors "
+                        "1000 --box'); each result line names the words and its seed")
+            ->excludes(inputs);
+    cmd->add_option("--seeds", args->seeds, "with --generate: the seeds A..B (inclusive) or A")
+        ->needs(generate);
+    cmd->add_option("--jobs,-j", args->jobs,
+                    "threads (default: every core; under --mpi, one a rank)")
+        ->check(CLI::Range(1u, 4096u));
+    CLI::Option* output = cmd->add_option(
+        "-o,--output", args->output, "append the results to this file (default: standard output)");
+    cmd->add_flag("--resume", args->resume,
+                  "keep the results already in the -o file and decide only the instances "
+                  "missing there (keyed by path and content hash)")
+        ->needs(output);
+    cmd->add_option("--certificates", args->certificates,
+                    "write each instance's certificate to NAME.HASH.cert in this directory "
+                    "(docs/certificates.md)");
+    add_scene_format_option(cmd, args->format);
+    add_solve_choices(cmd, args->choices,
+                      "let the whole batch grow by at most MB megabytes of address space; an "
+                      "instance that runs out answers unknown (limit memory)");
+    cmd->add_flag("--quiet", args->quiet, "no progress line (shown only on a terminal)");
+    cmd->add_flag("--mpi", args->mpi,
+                  "spread the instances over the ranks of 'mpirun -n P orthoray batch ... --mpi': "
+                  "rank 0 hands out chunks and writes the results (docs/batch.md)");
+    return [args] { return run(*args); };
+}
+
+} // namespace orthoray::cli

@@ -1,0 +1,197 @@
+#include "batch_mpi.hpp"
+
+#include "batch_inputs.hpp"
+#include "batch_results.hpp"
+#include "batch_tally.hpp"
+#include "batch_threads.hpp"
+#include "commands.hpp"
+#include "output_file.hpp"
+#include "run_monitor.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <set>
+#include <thread>
+#include <unistd.h>
+
+namespace orthoray::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Messages between rank 0 and the others. A chunk lists, for each
+// instance, its path and the content hashes the results file already holds
+// for it (so a worker skips what --resume would skip), each ended by NUL;
+// an empty chunk means there is no more work. A result is the instance's
+// Ending as one character, then its line (empty when nothing is recorded).
+enum Tag : int { request = 1, chunk = 2, result = 3 };
+
+// MPI_Init_thread and MPI_Finalize around a run; only the main thread of a
+// rank calls MPI (MPI_THREAD_FUNNELED).
+class MpiSession {
+public:
+    MpiSession() {
+        int provided = 0;
+        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+    }
+    ~MpiSession() { MPI_Finalize(); }
+    MpiSession(const MpiSession&) = delete;
+    MpiSession& operator=(const MpiSession&) = delete;
+    int rank = 0, size = 1;
+};
+
+void send(const std::string& bytes, int to, Tag tag) {
+    MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
+}
+
+std::string receive(const MPI_Status& probed) {
+    int count = 0;
+    MPI_Get_count(&probed, MPI_CHAR, &count);
+    std::string bytes(static_cast<std::size_t>(count), '\0');
+    MPI_Recv(bytes.data(), count, MPI_CHAR, probed.MPI_SOURCE, probed.MPI_TAG, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    return bytes;
+}
+
+// Any failure ends every rank at once: the results file holds only whole
+// lines, so a --resume run goes on from there.
+[[noreturn]] void abort_all(const char* what, int status) {
+    std::fprintf(stderr, "orthoray: %s\n", what);
+    MPI_Abort(MPI_COMM_WORLD, status);
+    std::_Exit(status);
+}
+
+int coordinate(const BatchArgs& args, int ranks) {
+    const InstanceList instances = list_instances(args);
+    auto log = args.output.empty() ? std::make_unique<ResultsLog>()
+                                   : std::make_unique<ResultsLog>(args.output, args.resume);
+    const InterruptGuard interrupts;
+    const InstanceDecider decider(args);
+    const DoneCheck done = [&](const std::string& key) { return log->done(key); };
+    Tally tally;
+    std::atomic<std::size_t> next{0};
+    const auto begin = Clock::now();
+    BatchThreads threads(std::max(1u, args.jobs), instances, next, decider, done,
+                         [&](const Outcome& outcome) {
+                             if (!outcome.line.empty()) log->append(outcome.line);
+                             tally.count(outcome.ending);
+                         });
+    const bool progress = !args.quiet && isatty(STDERR_FILENO);
+    auto next_draw = begin;
+    int working = ranks - 1;
+    while (working > 0) {
+        int pending = 0;
+        MPI_Status status;
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status);
+        if (!pending) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            if (progress && Clock::now() >= next_draw) {
+                tally.draw_progress(instances.size(), begin);
+                next_draw = Clock::now() + std::chrono::milliseconds(100);
+            }
+            continue;
+        }
+        const std::string message = receive(status);
+        if (status.MPI_TAG == result) {
+            const std::string line = message.substr(1);
+            if (!line.empty()) log->append(line);
+            tally.count(static_cast<Ending>(message.at(0)));
+            continue;
+        }
+        // The next chunk; an empty one (no work left, or a signal) tells
+        // the rank to stop. Generated instances already in the file are
+        // skipped here, so a chunk is only empty when nothing is left.
+        std::string work;
+        while (work.empty() && !InterruptGuard::requested()) {
+            const std::size_t n = instances.size();
+            const std::size_t left = n - std::min(n, next.load());
+            const std::size_t size =
+                std::clamp<std::size_t>(left / (4 * static_cast<std::size_t>(ranks)), 1, 64);
+            const std::size_t end = next += size;
+            if (end - size >= n) break;
+            for (std::size_t i = end - size; i < std::min(end, n); ++i) {
+                const std::string name = instances.name(i);
+                if (instances.generated() && log->done(generated_key(args, name))) {
+                    tally.count(Ending::skipped);
+                    continue;
+                }
+                work += name + '\0';
+                for (const std::string& hash : log->versions_of(name)) work += hash + ',';
+                work += '\0';
+            }
+        }
+        if (work.empty()) --working;
+        send(work, status.MPI_SOURCE, chunk);
+    }
+    while (progress && !threads.finished_within(std::chrono::milliseconds(100)))
+        tally.draw_progress(instances.size(), begin);
+    if (progress) std::fputs("\r\033[K", stderr);
+    threads.join();
+    log->close();
+    if (tally.done == instances.size())
+        log->sort_lines([&](const std::string& name) { return instances.position(name); });
+    return tally.finish(instances.size(),
+                        std::chrono::duration<double>(Clock::now() - begin).count());
+}
+
+void work(const BatchArgs& args) {
+    const InterruptGuard interrupts;
+    const InstanceDecider decider(args);
+    for (;;) {
+        send({}, 0, request);
+        MPI_Status status;
+        MPI_Probe(0, chunk, MPI_COMM_WORLD, &status);
+        const std::string work = receive(status);
+        if (work.empty()) return;
+        std::vector<std::pair<std::string, std::set<std::string>>> instances;
+        for (std::size_t at = 0; at < work.size();) {
+            const std::size_t path_end = work.find('\0', at);
+            const std::size_t hashes_end = work.find('\0', path_end + 1);
+            std::set<std::string> hashes;
+            for (std::size_t h = path_end + 1; h < hashes_end;) {
+                const std::size_t comma = work.find(',', h);
+                hashes.insert(work.substr(h, comma - h));
+                h = comma + 1;
+            }
+            instances.emplace_back(work.substr(at, path_end - at), std::move(hashes));
+            at = hashes_end + 1;
+        }
+        for (const auto& [path, hashes] : instances) {
+            const DoneCheck done = [&](const std::string& key) {
+                for (const std::string& hash : hashes)
+                    if (key == result_key(path, hash)) return true;
+                return false;
+            };
+            const Outcome outcome = decider.decide(path, done);
+            send(static_cast<char>(outcome.ending) + outcome.line, 0, result);
+            if (outcome.ending == Ending::interrupted) break;
+        }
+    }
+}
+
+} // namespace
+
+int run_on_ranks(const BatchArgs& args) {
+    const MpiSession session;
+    if (args.choices.max_memory > 0) limit_memory(args.choices.max_memory);
+    try {
+        if (session.rank == 0) return coordinate(args, session.size);
+        work(args);
+        return 0;
+    } catch (const UsageError& e) {
+        abort_all(e.what(), bad_input);
+    } catch (const WriteError& e) {
+        abort_all(e.what(), write_failed);
+    } catch (const std::exception& e) {
+        abort_all(e.what(), internal_error);
+    }
+}
+
+} // namespace orthoray::cli

@@ -1,0 +1,94 @@
+#include "solve_choices.hpp"
+
+#include "option_checks.hpp"
+
+#include <map>
+#include <vector>
+
+namespace orthoray::cli {
+namespace {
+
+const std::map<std::string, Engine> engines{{"auto", Engine::automatic},
+                                            {"lattice", Engine::lattice},
+                                            {"induction", Engine::induction},
+                                            {"reference", Engine::reference},
+                                            {"graph", Engine::graph}};
+const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetector::first_state},
+                                                     {"brent", CycleDetector::brent}};
+const std::map<std::string, Arithmetic> arithmetics{
+    {"auto", Arithmetic::automatic}, {"int128", Arithmetic::int128}, {"wide", Arithmetic::wide}};
+const std::map<std::string, Shooter> shooters{{"auto", Shooter::automatic},
+                                              {"grid", Shooter::grid},
+                                              {"bvh", Shooter::bvh},
+                                              {"pieces", Shooter::pieces},
+                                              {"section", Shooter::section}};
+
+template <class T>
+std::vector<std::string> names(const std::map<std::string, T>& choices) {
+    std::vector<std::string> out;
+    for (const auto& [name, value] : choices) out.push_back(name);
+    return out;
+}
+
+} // namespace
+
+SolveOptions SolveChoices::options() const {
+    SolveOptions options;
+    options.engine = engines.at(engine);
+    options.cycle_detector = detectors.at(detector);
+    options.arithmetic = arithmetics.at(arithmetic);
+    options.shooter = shooters.at(shooter);
+    if (max_steps_option && max_steps_option->count() > 0) options.max_steps = max_steps;
+    return options;
+}
+
+std::optional<std::chrono::steady_clock::time_point>
+SolveChoices::deadline(std::chrono::steady_clock::time_point begin) const {
+    if (timeout <= 0) return std::nullopt;
+    return begin + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                       std::chrono::duration<double>(timeout));
+}
+
+void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_memory_help) {
+    c.max_steps_option =
+        cmd->add_option("--max-steps", c.max_steps,
+                        "perform at most N reflections; without an answer by then, answer unknown "
+                        "(reason limit) and exit 3")
+            ->check(whole_number_u64());
+    cmd->add_option("--timeout", c.timeout,
+                    "stop after SECONDS (a decimal, counted from the start) with answer unknown "
+                    "(reason limit, limit time) and exit 3")
+        ->check(timeout_seconds());
+    cmd->add_option("--max-memory", c.max_memory, max_memory_help)
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+    cmd->add_option("--engine", c.engine,
+                    "auto (default: simulate; in 2D, switch to induction once a short run has "
+                    "not answered), lattice (simulation on integer lattice states), induction "
+                    "(2D: Rauzy-Zorich induction on the piece tables, time polynomial in the "
+                    "input size; other dimensions are simulated), reference (naive rational O(n) "
+                    "scan per reflection, the test oracle), graph (explicit state graph; small "
+                    "scenes only)")
+        ->check(CLI::IsMember(names(engines)));
+    cmd->add_option("--cycle-detector", c.detector,
+                    "first-state (default: compare with the state after reflection 1) or brent "
+                    "(Brent's algorithm; needs no injectivity); both O(1) memory")
+        ->check(CLI::IsMember(names(detectors)));
+    cmd->add_option("--arithmetic", c.arithmetic,
+                    "auto (default: the narrowest integers a bound proves safe: int64, int128, "
+                    "then GMP), int128 (at least 128-bit), or wide (always GMP)")
+        ->check(CLI::IsMember(names(arithmetics)));
+    cmd->add_option(
+           "--shooter", c.shooter,
+           "how the lattice engine finds the next hit: auto (default: in 3D the "
+           "cross-section grid, in 2D the uniform grid and then piece tables once "
+           "max(16384, 64 n) reflections have not answered; a bounding volume hierarchy when "
+           "elements cluster), grid (uniform grid), bvh, pieces (2D piece tables from the "
+           "start) or section (cross-section grid)")
+        ->check(CLI::IsMember(names(shooters)));
+}
+
+std::string engine_name(const Answer& answer, const std::string& asked) {
+    return answer.engine == EngineUsed::none ? asked : to_string(answer.engine);
+}
+
+} // namespace orthoray::cli

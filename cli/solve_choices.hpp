@@ -1,0 +1,40 @@
+// The options `solve` and `batch` share: which engine runs and how, and the
+// limits of one instance. They are registered in one place, so both
+// commands accept the same words and refuse the same values.
+#pragma once
+
+#include "orthoray/answer.hpp"
+#include "orthoray/solve.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace orthoray::cli {
+
+struct SolveChoices {
+    std::string engine = "auto", detector = "first-state", arithmetic = "auto", shooter = "auto";
+    std::uint64_t max_steps = 0, max_memory = 0;
+    double timeout = 0; // seconds; 0: no timeout
+    const CLI::Option* max_steps_option = nullptr;
+
+    // The library's options for these choices (no observers attached).
+    SolveOptions options() const;
+    // `begin` plus the timeout, when there is one.
+    std::optional<std::chrono::steady_clock::time_point>
+    deadline(std::chrono::steady_clock::time_point begin) const;
+};
+
+// Registers --engine, --cycle-detector, --arithmetic, --shooter,
+// --max-steps, --timeout and --max-memory on `cmd`. `max_memory_help` says
+// what the memory limit covers (one solve, or the whole batch).
+void add_solve_choices(CLI::App* cmd, SolveChoices& choices, const std::string& max_memory_help);
+
+// The engine a report names: the one that ran, or when none did (memory ran
+// out first) the one asked for.
+std::string engine_name(const Answer& answer, const std::string& asked);
+
+} // namespace orthoray::cli
