@@ -28,5 +28,6 @@ Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);
 Command add_render(CLI::App& app);
+Command add_realistic(CLI::App& app);
 
 } // namespace orthoray::cli
