@@ -4,6 +4,8 @@
 // rejected.
 #include "support/case_count.hpp"
 #include "support/portable_random.hpp"
+#include "support/run_cli.hpp"
+#include "support/test_files.hpp"
 
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
@@ -216,4 +218,34 @@ TEST_CASE("realistic models: every malformed line is one located message", "[rea
                                         "object, source, receiver, eps, pair or triple");
     CHECK(message(head + "eps 3\n") ==
           "m.realistic:6:1: found 'eps', expected one 'eps' statement");
+}
+
+TEST_CASE("orthoray realistic answers, writes a certificate verify accepts, and exits as solve",
+          "[realistic][cli]") {
+    const TempDir dir;
+    const std::string model = source_path("instances/realistic/greedy-fails.realistic");
+    const std::string cert = dir.path("r.cert");
+    const CliResult run =
+        run_cli("realistic --json " + quote(model) + " --certificate " + quote(cert));
+    CHECK(run.status == 0);
+    CHECK(
+        run.out.substr(0, run.out.find(",\"seconds\"")) ==
+        R"({"answer":"yes","best":20,"eps":10,"path":["S","C","B","R"],"arrivals":[100,40,20],"pairs":6)");
+    const CliResult valid = run_cli("verify " + quote(model) + ' ' + quote(cert));
+    CHECK(valid.status == 0);
+    CHECK(valid.out == "valid: yes, best 20\n");
+    // Raise eps past the best: the answer is no, exit 1.
+    std::string text = slurp(model);
+    text.replace(text.find("eps 10"), 6, "eps 20");
+    const std::string strict = dir.write("strict.realistic", text);
+    CHECK(run_cli("realistic " + quote(strict)).status == 1);
+    // The first certificate claims yes, which eps 20 no longer allows.
+    const CliResult stale = run_cli("verify " + quote(strict) + ' ' + quote(cert));
+    CHECK(stale.status == 1);
+    CHECK(stale.out == "invalid: the answer does not follow from best and eps\n");
+    const CliResult bad = run_cli(
+        "realistic " + quote(dir.write("bad.realistic", "realistic 1\nobject S\nsource T 1\n")));
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("bad.realistic:3:8: found 'T', expected an object declared by 'object'") !=
+          std::string::npos);
 }
