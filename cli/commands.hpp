@@ -32,6 +32,7 @@ Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);
 Command add_render(CLI::App& app);
+Command add_realistic(CLI::App& app);
 Command add_batch(CLI::App& app);
 
 struct GenerateArgs;

@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     Command bounds = add_bounds(app);
     Command render = add_render(app);
     Command convert = add_convert(app);
+    Command realistic = add_realistic(app);
     Command batch = add_batch(app);
 
     // CLI11 would call an unknown command a missing one; name it instead,
@@ -85,14 +86,15 @@ int main(int argc, char** argv) {
         return bad_input;
     }
     try {
-        const int status = app.got_subcommand("solve")      ? solve()
-                           : app.got_subcommand("verify")   ? verify()
-                           : app.got_subcommand("generate") ? generate()
-                           : app.got_subcommand("bounds")   ? bounds()
-                           : app.got_subcommand("render")   ? render()
-                           : app.got_subcommand("convert")  ? convert()
-                           : app.got_subcommand("batch")    ? batch()
-                                                            : pieces();
+        const int status = app.got_subcommand("solve")       ? solve()
+                           : app.got_subcommand("verify")    ? verify()
+                           : app.got_subcommand("generate")  ? generate()
+                           : app.got_subcommand("bounds")    ? bounds()
+                           : app.got_subcommand("render")    ? render()
+                           : app.got_subcommand("convert")   ? convert()
+                           : app.got_subcommand("realistic") ? realistic()
+                           : app.got_subcommand("batch")     ? batch()
+                                                             : pieces();
         finish_standard_output();
         return status;
     } catch (const WriteError& e) {

@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
+#include "orthoray/realistic.hpp"
 #include "scene_format_option.hpp"
 
 #include <iostream>
@@ -14,7 +15,21 @@ struct VerifyArgs {
     std::string file, certificate, format;
 };
 
+bool is_realistic_model(const std::string& path) {
+    const std::string ending = ".realistic";
+    return path.size() >= ending.size() &&
+           path.compare(path.size() - ending.size(), ending.size(), ending) == 0;
+}
+
 int run(const VerifyArgs& args) {
+    if (is_realistic_model(args.file)) {
+        const RealisticModel model = read_realistic(read_file(args.file), args.file);
+        const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
+        const RealisticVerdict verdict =
+            verify_realistic_certificate(model, *cert, args.certificate);
+        std::cout << verdict.message << '\n';
+        return verdict.valid ? yes : no;
+    }
     const Scene scene = load_scene(args.file, scene_format_named(args.format));
     const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
     const Verdict verdict = verify_certificate(scene, *cert, args.certificate);
@@ -34,7 +49,10 @@ Command add_verify(CLI::App& app) {
                   "  valid: hit, 6 reflections\n\n"
                   "Exit status: 0 valid, 1 invalid (the first failing step is printed),\n"
                   "2 unreadable or malformed scene or certificate.");
-    cmd->add_option("FILE", args->file, "the scene (.scene text or JSON)")->required();
+    cmd->add_option("FILE", args->file,
+                    "the scene (.scene text or JSON), or a realistic model (.realistic, checked "
+                    "against 'orthoray realistic --certificate')")
+        ->required();
     cmd->add_option("CERT", args->certificate, "the certificate file")->required();
     add_scene_format_option(cmd, args->format);
     return [args] { return run(*args); };

@@ -1,0 +1,90 @@
+// orthoray realistic FILE: the intensity question of a realistic model
+// (docs/realistic-scenes.md), decided by the pair dynamic program.
+#include "commands.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/realistic.hpp"
+#include "output_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace orthoray::cli {
+namespace {
+
+struct RealisticArgs {
+    std::string file, certificate;
+    bool json = false;
+};
+
+int run(const RealisticArgs& args) {
+    const RealisticModel model = read_realistic(read_file(args.file), args.file);
+    const auto begin = std::chrono::steady_clock::now();
+    const RealisticAnswer answer = solve_realistic(model);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (!args.certificate.empty()) {
+        OutputFile out(args.certificate, {args.file}, "the certificate");
+        write_realistic_certificate(out.stream(), model, answer);
+        out.commit();
+    }
+    std::string path, arrivals;
+    for (const std::size_t object : answer.path)
+        path += (path.empty() ? "" : " ") + model.objects[object];
+    for (const Integer& i : answer.intensities)
+        arrivals += (arrivals.empty() ? "" : " ") + i.get_str();
+    if (args.json) {
+        nlohmann::json j;
+        j["answer"] = answer.yes ? "yes" : "no";
+        std::cout << "{\"answer\":" << j["answer"].dump()
+                  << ",\"best\":" << (answer.best < 0 ? std::string("null") : answer.best.get_str())
+                  << ",\"eps\":" << model.eps.get_str() << ",\"path\":[";
+        for (std::size_t k = 0; k < answer.path.size(); ++k)
+            std::cout << (k ? "," : "") << nlohmann::json(model.objects[answer.path[k]]).dump();
+        std::cout << "],\"arrivals\":[";
+        for (std::size_t k = 0; k < answer.intensities.size(); ++k)
+            std::cout << (k ? "," : "") << answer.intensities[k].get_str();
+        std::cout << "],\"pairs\":" << answer.bounds.size()
+                  << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
+    } else {
+        std::printf("answer       %s\n", answer.yes ? "yes" : "no");
+        std::printf("best         %s (eps %s)\n",
+                    answer.best < 0 ? "none arrives" : answer.best.get_str().c_str(),
+                    model.eps.get_str().c_str());
+        if (!answer.path.empty()) {
+            std::printf("path         %s\n", path.c_str());
+            std::printf("arrivals     %s\n", arrivals.c_str());
+        }
+        std::printf("pairs        %zu\n", answer.bounds.size());
+        std::printf("time         %.3f ms\n", seconds * 1e3);
+    }
+    return answer.yes ? yes : no;
+}
+
+} // namespace
+
+Command add_realistic(CLI::App& app) {
+    auto args = std::make_shared<RealisticArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "realistic",
+        "Does some ray path from the source object reach the receiver with intensity above\n"
+        "eps? Realistic scenes (Isobe et al. 2005): intensities in N never grow along a path,\n"
+        "each object passes on a monotone share; decided by a dynamic program over object\n"
+        "pairs (docs/realistic-scenes.md).\n\n"
+        "Example:\n"
+        "  orthoray realistic instances/realistic/greedy-fails.realistic\n\n"
+        "Exit status: 0 yes, 1 no, 2 bad input or usage, 5 the certificate could not be\n"
+        "written. 'orthoray verify MODEL.realistic CERT' checks a certificate.");
+    cmd->add_option("FILE", args->file, "the model (docs/realistic-scenes.md)")->required();
+    cmd->add_flag("--json", args->json,
+                  "one JSON object: answer, best (null when nothing arrives), eps, path, "
+                  "arrivals, pairs, seconds");
+    cmd->add_option("--certificate", args->certificate,
+                    "write the path and the closed pair bounds to this file");
+    return [args] { return run(*args); };
+}
+
+} // namespace orthoray::cli
