@@ -3,25 +3,17 @@
 // calls solve() like `orthoray solve`, once per instance, on N threads that
 // take the next instance as they finish one (instances differ in cost by
 // orders of magnitude, so a fixed split would leave threads idle).
-#include "batch_inputs.hpp"
 #include "batch_instance.hpp"
 #include "batch_mpi.hpp"
-#include "batch_results.hpp"
-#include "batch_tally.hpp"
-#include "batch_threads.hpp"
+#include "batch_owner.hpp"
 #include "commands.hpp"
 #include "run_monitor.hpp"
 #include "scene_format_option.hpp"
 #include "solve_choices.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <thread>
-#include <unistd.h>
-#include <vector>
 
 namespace orthoray::cli {
 namespace {
@@ -53,17 +45,6 @@ InstanceList list_instances(const BatchArgs& args) {
 
 namespace {
 
-std::unique_ptr<ResultsLog> open_results(const BatchArgs& args) {
-    auto log = args.output.empty() ? std::make_unique<ResultsLog>()
-                                   : std::make_unique<ResultsLog>(args.output, args.resume);
-    if (log->dropped_bytes() > 0)
-        std::fprintf(stderr,
-                     "orthoray: dropped the last %llu bytes of '%s': not a complete result (the "
-                     "end of a run that was stopped)\n",
-                     static_cast<unsigned long long>(log->dropped_bytes()), args.output.c_str());
-    return log;
-}
-
 int run(const BatchArgs& args) {
     check(args);
 #ifdef ORTHORAY_MPI
@@ -73,34 +54,10 @@ int run(const BatchArgs& args) {
         throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
                          "docs/batch.md)");
 #endif
-    const InstanceList instances = list_instances(args);
-    const std::unique_ptr<ResultsLog> log = open_results(args);
     if (args.choices.max_memory > 0) limit_memory(args.choices.max_memory);
-
-    const InterruptGuard interrupts;
-    const InstanceDecider decider(args);
-    const DoneCheck done = [&](const std::string& key) { return log->done(key); };
-    Tally tally;
-    std::atomic<std::size_t> next{0};
-    const auto begin = Clock::now();
-    BatchThreads threads(args.jobs > 0 ? args.jobs
-                                       : std::max(1u, std::thread::hardware_concurrency()),
-                         instances, next, decider, done, [&](const Outcome& outcome) {
-                             if (!outcome.line.empty()) log->append(outcome.line);
-                             tally.count(outcome.ending);
-                         });
-    // The progress line is redrawn every 100 ms until the last thread ends.
-    if (!args.quiet && isatty(STDERR_FILENO)) {
-        while (!threads.finished_within(std::chrono::milliseconds(100)))
-            tally.draw_progress(instances.size(), begin);
-        std::fputs("\r\033[K", stderr);
-    }
-    threads.join();
-    log->close();
-    if (tally.done == instances.size())
-        log->sort_lines([&](const std::string& name) { return instances.position(name); });
-    return tally.finish(instances.size(),
-                        std::chrono::duration<double>(Clock::now() - begin).count());
+    BatchOwner owner(args,
+                     args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency()));
+    return owner.finish();
 }
 
 } // namespace

@@ -1,9 +1,6 @@
 #include "batch_mpi.hpp"
 
-#include "batch_inputs.hpp"
-#include "batch_results.hpp"
-#include "batch_tally.hpp"
-#include "batch_threads.hpp"
+#include "batch_owner.hpp"
 #include "commands.hpp"
 #include "output_file.hpp"
 #include "run_monitor.hpp"
@@ -14,10 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
-#include <memory>
 #include <set>
 #include <thread>
-#include <unistd.h>
 
 namespace orthoray::cli {
 namespace {
@@ -69,22 +64,9 @@ std::string receive(const MPI_Status& probed) {
 }
 
 int coordinate(const BatchArgs& args, int ranks) {
-    const InstanceList instances = list_instances(args);
-    auto log = args.output.empty() ? std::make_unique<ResultsLog>()
-                                   : std::make_unique<ResultsLog>(args.output, args.resume);
-    const InterruptGuard interrupts;
-    const InstanceDecider decider(args);
-    const DoneCheck done = [&](const std::string& key) { return log->done(key); };
-    Tally tally;
-    std::atomic<std::size_t> next{0};
-    const auto begin = Clock::now();
-    BatchThreads threads(std::max(1u, args.jobs), instances, next, decider, done,
-                         [&](const Outcome& outcome) {
-                             if (!outcome.line.empty()) log->append(outcome.line);
-                             tally.count(outcome.ending);
-                         });
-    const bool progress = !args.quiet && isatty(STDERR_FILENO);
-    auto next_draw = begin;
+    BatchOwner owner(args, std::max(1u, args.jobs));
+    const InstanceList& instances = owner.instances;
+    auto next_draw = std::chrono::steady_clock::now();
     int working = ranks - 1;
     while (working > 0) {
         int pending = 0;
@@ -92,17 +74,15 @@ int coordinate(const BatchArgs& args, int ranks) {
         MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status);
         if (!pending) {
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
-            if (progress && Clock::now() >= next_draw) {
-                tally.draw_progress(instances.size(), begin);
+            if (owner.progress && Clock::now() >= next_draw) {
+                owner.draw_progress();
                 next_draw = Clock::now() + std::chrono::milliseconds(100);
             }
             continue;
         }
         const std::string message = receive(status);
         if (status.MPI_TAG == result) {
-            const std::string line = message.substr(1);
-            if (!line.empty()) log->append(line);
-            tally.count(static_cast<Ending>(message.at(0)));
+            owner.record({static_cast<Ending>(message.at(0)), message.substr(1)});
             continue;
         }
         // The next chunk; an empty one (no work left, or a signal) tells
@@ -111,34 +91,26 @@ int coordinate(const BatchArgs& args, int ranks) {
         std::string work;
         while (work.empty() && !InterruptGuard::requested()) {
             const std::size_t n = instances.size();
-            const std::size_t left = n - std::min(n, next.load());
+            const std::size_t left = n - std::min(n, owner.next.load());
             const std::size_t size =
                 std::clamp<std::size_t>(left / (4 * static_cast<std::size_t>(ranks)), 1, 64);
-            const std::size_t end = next += size;
+            const std::size_t end = owner.next += size;
             if (end - size >= n) break;
             for (std::size_t i = end - size; i < std::min(end, n); ++i) {
                 const std::string name = instances.name(i);
-                if (instances.generated() && log->done(generated_key(args, name))) {
-                    tally.count(Ending::skipped);
+                if (instances.generated() && owner.log->done(generated_key(args, name))) {
+                    owner.record({Ending::skipped, {}});
                     continue;
                 }
                 work += name + '\0';
-                for (const std::string& hash : log->versions_of(name)) work += hash + ',';
+                for (const std::string& hash : owner.log->versions_of(name)) work += hash + ',';
                 work += '\0';
             }
         }
         if (work.empty()) --working;
         send(work, status.MPI_SOURCE, chunk);
     }
-    while (progress && !threads.finished_within(std::chrono::milliseconds(100)))
-        tally.draw_progress(instances.size(), begin);
-    if (progress) std::fputs("\r\033[K", stderr);
-    threads.join();
-    log->close();
-    if (tally.done == instances.size())
-        log->sort_lines([&](const std::string& name) { return instances.position(name); });
-    return tally.finish(instances.size(),
-                        std::chrono::duration<double>(Clock::now() - begin).count());
+    return owner.finish();
 }
 
 void work(const BatchArgs& args) {
