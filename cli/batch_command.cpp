@@ -18,8 +18,6 @@
 namespace orthoray::cli {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 void check(const BatchArgs& args) {
     if (!args.certificates.empty() && args.choices.engine == "graph")
         throw UsageError("found --engine graph with --certificates, expected another engine "
