@@ -29,6 +29,8 @@ namespace {
 using orthoray::Rational;
 using orthoray::Scene;
 
+using orthoray::test::expect_invalid;
+using orthoray::test::expect_valid;
 using orthoray::test::Outcome;
 using orthoray::test::verify;
 
@@ -40,29 +42,12 @@ std::string replace(std::string text, const std::string& from, const std::string
     return text;
 }
 
-// The tampered text is rejected, and the message contains `reason`.
-void expect_invalid(const Scene& scene, const std::string& text, const std::string& reason) {
-    const Outcome outcome = verify(scene, text);
-    INFO("certificate:\n" << text << "verify said: " << outcome.message);
-    CHECK_FALSE(outcome.valid);
-    CHECK_FALSE(outcome.input_error);
-    CHECK(outcome.message.rfind("invalid: ", 0) == 0);
-    CHECK(outcome.message.find(reason) != std::string::npos);
-}
-
 void expect_malformed(const Scene& scene, const std::string& text, const std::string& reason) {
     const Outcome outcome = verify(scene, text);
     INFO("certificate:\n" << text << "verify said: " << outcome.message);
     CHECK_FALSE(outcome.valid);
     CHECK(outcome.input_error);
     CHECK(outcome.message.find(reason) != std::string::npos);
-}
-
-void expect_valid(const Scene& scene, const std::string& text, const std::string& message) {
-    const Outcome outcome = verify(scene, text);
-    INFO("certificate:\n" << text << "verify said: " << outcome.message);
-    CHECK(outcome.valid);
-    CHECK(outcome.message == message);
 }
 
 // ------------------------------------------------------------ hallway --

@@ -24,6 +24,8 @@ namespace {
 
 using orthoray::Scene;
 namespace test = orthoray::test;
+using orthoray::test::expect_invalid;
+using orthoray::test::expect_valid;
 using orthoray::test::Outcome;
 using orthoray::test::verify;
 
@@ -36,23 +38,6 @@ std::string replaced(std::string text, const std::string& from, const std::strin
     const std::size_t at = text.find(from);
     REQUIRE(at != std::string::npos);
     return text.replace(at, from.size(), to);
-}
-
-void expect_valid(const Scene& scene, const std::string& text, const std::string& message) {
-    const Outcome outcome = verify(scene, text);
-    INFO("certificate:\n" << text << "verify said: " << outcome.message);
-    CHECK(outcome.valid);
-    CHECK(outcome.message == message);
-}
-
-// Rejected, not as malformed input, with `reason` in the message.
-void expect_invalid(const Scene& scene, const std::string& text, const std::string& reason) {
-    const Outcome outcome = verify(scene, text);
-    INFO("certificate:\n" << text << "verify said: " << outcome.message);
-    CHECK_FALSE(outcome.valid);
-    CHECK_FALSE(outcome.input_error);
-    CHECK(outcome.message.rfind("invalid: ", 0) == 0);
-    CHECK(outcome.message.find(reason) != std::string::npos);
 }
 
 // Malformed: one located message, exactly `message`.

@@ -1,11 +1,14 @@
 // What `verify` says about a certificate given as text, for the certificate
 // tests: a malformed certificate (InputError) is not valid, and its message
-// is kept so that a test can demand the reason it was rejected for.
+// is kept so that a test can demand the reason it was rejected for; and the
+// checks the tests make of it.
 #pragma once
 
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
+
+#include <catch2/catch.hpp>
 
 #include <sstream>
 #include <string>
@@ -26,6 +29,25 @@ inline Outcome verify(const Scene& scene, const std::string& text) {
     } catch (const InputError& error) {
         return {false, true, error.what()};
     }
+}
+
+// Verified, with exactly `message`.
+inline void expect_valid(const Scene& scene, const std::string& text, const std::string& message) {
+    const Outcome outcome = verify(scene, text);
+    INFO("certificate:\n" << text << "verify said: " << outcome.message);
+    CHECK(outcome.valid);
+    CHECK(outcome.message == message);
+}
+
+// Rejected, not as malformed input, with `reason` in the message: the
+// tampering is caught for the reason the test intends.
+inline void expect_invalid(const Scene& scene, const std::string& text, const std::string& reason) {
+    const Outcome outcome = verify(scene, text);
+    INFO("certificate:\n" << text << "verify said: " << outcome.message);
+    CHECK_FALSE(outcome.valid);
+    CHECK_FALSE(outcome.input_error);
+    CHECK(outcome.message.rfind("invalid: ", 0) == 0);
+    CHECK(outcome.message.find(reason) != std::string::npos);
 }
 
 } // namespace orthoray::test
