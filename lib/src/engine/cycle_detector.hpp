@@ -3,10 +3,22 @@
 // Both keep O(1) states, so memory never grows with the number of reflections.
 #pragma once
 
+#include "orthoray/solve.hpp" // CycleDetector
+
 #include <cstdint>
 #include <optional>
 
 namespace orthoray::engine {
+
+// The detector an engine runs: the one asked for when the step map is
+// injective (every element two-sided), else Brent's. Comparing with the
+// first state is only sound for an injective map: after a tail the
+// trajectory never sees its first state again and would run forever. Every
+// engine picks its detector through this function, so no path leads to the
+// first-state detector on a scene with one-sided elements.
+constexpr CycleDetector detector_for(bool one_sided, CycleDetector asked) {
+    return one_sided ? CycleDetector::brent : asked;
+}
 
 // The step map on states is injective (reflection is reversible), so a
 // periodic trajectory is purely periodic from reflection 1 on: it returns to

@@ -63,18 +63,18 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // The illumination question (several rays or targets, splitters) and
-    // one-sided elements (a non-injective step map) are decided by the
-    // reference tracer (the illumination question also by the state graph
-    // when asked for): the lattice and induction engines assume two-sided
-    // mirrors and one trajectory. The answer's engine says which ran.
-    if (options.path && (!scene.single_trajectory() || scene.has_one_sided()))
-        throw std::invalid_argument("certificates for scenes with splitters, one-sided elements "
-                                    "or several rays or targets are not supported yet");
+    // The illumination question (several rays or targets, splitters) is
+    // decided by its own search (or the state graph when asked for). A
+    // single trajectory goes to the engine asked for: with one-sided
+    // elements the lattice engine filters them by side and finds the tail
+    // (docs/optics.md), and induction, which needs a bijection, is not used
+    // (the answer's engine says lattice).
+    if (options.path && !scene.single_trajectory())
+        throw std::invalid_argument("certificates for scenes with splitters or several rays or "
+                                    "targets are not supported yet");
     if (!scene.single_trajectory())
         return options.engine == Engine::graph ? solve_illumination_by_graph(scene, options)
                                                : engine::solve_illumination(scene, options);
-    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
     switch (options.engine) {
     case Engine::reference:
         return engine::solve_by_reference(scene, options);
