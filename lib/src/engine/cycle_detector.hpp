@@ -69,4 +69,17 @@ private:
     std::uint64_t power_ = 1, distance_ = 0;
 };
 
+// The reflection at which BrentDetector reports the period of a trajectory
+// whose cycle starts at state mu >= 1 with period lambda >= 1. The saved
+// state sits at reflections 1, 2, 4, 8, ...; from 2^k it is compared with
+// the next 2^k states, so the first saved state on the cycle (2^k >= mu)
+// whose window covers a period (2^k >= lambda) meets itself again lambda
+// reflections later. Lets an engine that knows mu and lambda without
+// stepping (the state graph) stop where the simulations stop.
+constexpr std::uint64_t brent_detection(std::uint64_t mu, std::uint64_t lambda) {
+    std::uint64_t saved = 1;
+    while (saved < mu || saved < lambda) saved *= 2;
+    return saved + lambda;
+}
+
 } // namespace orthoray::engine

@@ -1,6 +1,7 @@
 // solve(): picks the engine the options ask for.
 #include "orthoray/solve.hpp"
 
+#include "engine/cycle_detector.hpp"
 #include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_tracer.hpp"
@@ -14,7 +15,8 @@ namespace {
 
 // The graph engine answers all at once; to honour max_steps like the
 // simulations, it reports a limit when they would have needed more
-// reflections (a cycle of period L is seen at reflection L + 1).
+// reflections (a cycle of period L is seen at reflection L + 1, a rho cycle
+// where Brent's detector sees it).
 Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     if (options.path) throw std::invalid_argument("the graph engine does not write certificates");
     Answer answer;
@@ -34,6 +36,10 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     answer = report->answer;
     if (answer.decided() && options.max_steps) {
         Integer needed = answer.reflections + (answer.reason == Reason::cycle ? 1 : 0);
+        // With one-sided elements the simulations run Brent's detector.
+        if (answer.reason == Reason::cycle && scene.has_one_sided())
+            needed = Integer(static_cast<unsigned long>(
+                engine::brent_detection(answer.tail.get_ui() + 1, answer.period().get_ui())));
         Integer cap = Integer(static_cast<unsigned long>(*options.max_steps));
         if (needed > cap) {
             answer.reason = Reason::limit;
