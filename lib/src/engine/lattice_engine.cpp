@@ -512,9 +512,12 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
     }
 }
 
+// The detector follows the scene, as in the reference tracer, so that both
+// stop at the same reflection under a cap even when the ray can meet none
+// of the one-sided elements (then ls.one_sided is false and the tail 0).
 template <class Int, int M>
 Answer run_with_detector(const LatticeScene& ls, const SolveOptions& options) {
-    if (detector_for(ls.one_sided, options.cycle_detector) == CycleDetector::brent)
+    if (detector_for(ls.scene->has_one_sided(), options.cycle_detector) == CycleDetector::brent)
         return run<Int, M, BrentDetector<State<Int, M>>>(ls, options);
     return run<Int, M, FirstStateDetector<State<Int, M>>>(ls, options);
 }
