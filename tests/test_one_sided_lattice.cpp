@@ -215,6 +215,8 @@ TEST_CASE("rho-cycle certificates: each point the next acting event, the cycle's
             CertificateWriter writer(out, s, format);
             SolveOptions options;
             options.shooter = test::chance(rng, 50) ? Shooter::automatic : Shooter::pieces;
+            // The reference tracer writes the same certificate.
+            if (test::chance(rng, 25)) options.engine = Engine::reference;
             writer.attach(options);
             const Answer a = solve(s, options);
             writer.finish(a);
