@@ -71,7 +71,8 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
         ->check(CLI::IsMember(names(engines)));
     cmd->add_option("--cycle-detector", c.detector,
                     "first-state (default: compare with the state after reflection 1) or brent "
-                    "(Brent's algorithm; needs no injectivity); both O(1) memory")
+                    "(Brent's algorithm; needs no injectivity, so always used with one-sided "
+                    "elements); both O(1) memory")
         ->check(CLI::IsMember(names(detectors)));
     cmd->add_option("--arithmetic", c.arithmetic,
                     "auto (default: the narrowest integers a bound proves safe: int64, int128, "

@@ -84,12 +84,12 @@ Answer stopped_before_solving(Limit limit) {
     return answer;
 }
 
-// Certificates do not cover splitters, one-sided elements or several rays
-// and targets yet (docs/optics.md): refuse before any file is written.
+// Certificates do not cover splitters or several rays and targets yet
+// (docs/optics.md): refuse before any file is written.
 void refuse_unsupported_certificate(const Scene& scene, const SolveArgs& args) {
-    if (args.certificate.empty() || (scene.single_trajectory() && !scene.has_one_sided())) return;
-    throw UsageError("--certificate: certificates for scenes with splitters, one-sided elements "
-                     "or several rays or targets are not supported yet");
+    if (args.certificate.empty() || scene.single_trajectory()) return;
+    throw UsageError("--certificate: certificates for scenes with splitters or several rays or "
+                     "targets are not supported yet");
 }
 
 int run(const SolveArgs& args, const CLI::Option* certificate) {

@@ -76,7 +76,7 @@ TEST_CASE("solve reports tail and period of a rho-shaped cycle", "[cli][optics]"
     CHECK(j["tail"] == 1);
     CHECK(j["period"] == 2);
     CHECK(j["reflections"] == 3);
-    CHECK(j["engine"] == "reference");
+    CHECK(j["engine"] == "lattice");
     // A purely periodic trajectory reports tail 0.
     const CliResult pure =
         run_cli("solve --json " + quote(instance("2d/unit-square-slope-2-3.scene")));
@@ -84,17 +84,35 @@ TEST_CASE("solve reports tail and period of a rho-shaped cycle", "[cli][optics]"
     CHECK(json_of(pure)["period"] == 10);
 }
 
-TEST_CASE("solve refuses certificates for the new scenes, writing nothing", "[cli][optics]") {
+TEST_CASE("solve refuses certificates for the illumination question, writing nothing",
+          "[cli][optics]") {
     TempDir dir;
-    for (const std::string& scene : {splitter_scene, rho_scene}) {
-        const std::string file = dir.write("scene.scene", scene);
-        const std::string cert = dir.path("out.cert");
-        const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
-        CHECK(r.status == 2);
-        CHECK(r.out.empty());
-        CHECK(r.err.find("not supported yet") != std::string::npos);
-        CHECK_FALSE(std::filesystem::exists(cert));
-    }
+    const std::string file = dir.write("scene.scene", splitter_scene);
+    const std::string cert = dir.path("out.cert");
+    const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("not supported yet") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(cert));
+}
+
+TEST_CASE("solve writes the rho-cycle certificate: the cycle's start state and the tail",
+          "[cli][optics][certificate]") {
+    // States (0, 3, +x), (10, 3, -x), (5, 3, +x), (10, 3, -x): the cycle
+    // starts at s_2 = (10, 3) going -x, tail 1, period 2.
+    TempDir dir;
+    const std::string file = dir.write("rho.scene", rho_scene);
+    const std::string cert = dir.path("rho.cert"), jsonl = dir.path("rho.jsonl");
+    const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
+    CHECK(r.status == 1);
+    CHECK(slurp(cert) == "orthoray-certificate 1\ndim 2\npoint 2 3\npoint 0 3\npoint 10 3\n"
+                         "point 5 3\npoint 10 3\nanswer no\nreason cycle\n"
+                         "reflections 3\nstate 10 3 -1 0\nperiod 2\ntail 1\nend\n");
+    REQUIRE(run_cli("solve " + quote(file) + " --certificate " + quote(jsonl) +
+                    " --certificate-format jsonl")
+                .status == 1);
+    CHECK(slurp(jsonl).find(R"("state": {"point": ["10", "3"], "direction": ["-1", "0"]}, )"
+                            R"("period": "2", "tail": "1"})") != std::string::npos);
 }
 
 TEST_CASE("render draws the new scenes, and refuses a certificate for them", "[cli][optics]") {

@@ -47,3 +47,19 @@ TEST_CASE("Brent finds the period after a tail", "[cycle]") {
             CHECK(detect<BrentDetector<std::uint64_t>>(x1, f) == brute_period(x1, f));
         }
 }
+
+TEST_CASE("brent_detection says at which reflection Brent's detector stops", "[cycle]") {
+    // States 1, 2, ..., mu - 1 on the tail, then mu .. mu + lambda - 1 round
+    // the cycle: s_i = i for i < mu + lambda, then back to mu.
+    for (std::uint64_t mu = 1; mu <= 40; ++mu)
+        for (std::uint64_t lambda = 1; lambda <= 40; ++lambda) {
+            BrentDetector<std::uint64_t> d;
+            std::uint64_t reflection = 1, s = 1;
+            while (!d.observe(s, reflection)) {
+                ++reflection;
+                s = s + 1 < mu + lambda ? s + 1 : mu;
+            }
+            INFO("mu " << mu << ", lambda " << lambda);
+            CHECK(brent_detection(mu, lambda) == reflection);
+        }
+}

@@ -5,7 +5,8 @@
 // brute-force answer (support/brute_force_shot.hpp) on random scenes with
 // coincident and overlapping elements and absorbers, from corners, planes,
 // walls and outside the scene, at magnitudes near the type's bound and
-// along whole trajectories. What only one structure promises (the BVH's
+// along whole trajectories, and with one-sided elements (each structure
+// must skip an element seen from its back). What only one structure promises (the BVH's
 // node count, the piece tables' budget) stays in that structure's file.
 #include "shoot/bvh.hpp"
 #include "shoot/cross_section_grid.hpp"
@@ -65,14 +66,16 @@ void require_same(const char* name, const LatticeScene& ls, const Shot<Int>& wan
 }
 
 // Random scenes of up to `max_elements` elements, coordinates times `scale`,
-// `shots` query points each, every structure on the same scene and points.
+// `shots` query points each, every structure on the same scene and points;
+// about `one_sided` percent of the elements one-sided.
 template <class Int, int M, class... Structures>
 void check_random_shots(std::uint64_t seed, int scenes, int max_elements, int shots,
-                        const Integer& scale) {
+                        const Integer& scale, int one_sided) {
     std::mt19937_64 rng(seed);
     for (int scene_index = 0; scene_index < scenes; ++scene_index) {
         int range = 0;
-        const LatticeScene ls = test::random_lattice_scene<M>(rng, max_elements, range, scale);
+        LatticeScene ls = test::random_lattice_scene<M>(rng, max_elements, range, scale);
+        test::make_one_sided<M>(rng, ls, one_sided);
         const std::tuple<Structures...> structures{Structures(ls)...};
         for (int shot = 0; shot < shots; ++shot) {
             Int p[M];
@@ -91,19 +94,20 @@ void check_random_shots(std::uint64_t seed, int scenes, int max_elements, int sh
 
 template <class Int, int M>
 void check_all_random_shots(std::uint64_t seed, int scenes, int max_elements, int shots,
-                            const Integer& scale) {
+                            const Integer& scale, int one_sided = 0) {
     check_random_shots<Int, M, UniformGrid<Int, M>, SectionAt<Int, M, 1>, SectionAt<Int, M, 4>,
                        SectionAt<Int, M, 16>, BoundingVolumeHierarchy<Int, M>>(
-        seed, scenes, max_elements, shots, scale);
+        seed, scenes, max_elements, shots, scale, one_sided);
 }
 
 // Follows the trajectory inside a closed box of mirrors with obstacles
 // (reflecting on mirrors, passing through absorbers) by one structure,
 // holding every structure to brute force at every step.
 template <class Int, int M>
-void check_trajectory(std::uint64_t seed, int obstacles, int steps) {
+void check_trajectory(std::uint64_t seed, int obstacles, int steps, int one_sided = 0) {
     std::mt19937_64 rng(seed);
-    const LatticeScene ls = test::random_box_scene<M>(rng, obstacles);
+    LatticeScene ls = test::random_box_scene<M>(rng, obstacles);
+    test::make_one_sided<M>(rng, ls, one_sided);
     const UniformGrid<Int, M> grid(ls);
     const SectionAt<Int, M, 1> section(ls);
     const SectionAt<Int, M, 4> dense_section(ls);
@@ -153,6 +157,43 @@ Integer near_bound() {
         return Integer(1) << 200;
 }
 
+// A mirror's pieces answer for the states on that mirror only, so the
+// queries are all of them: every lattice point in every direction.
+template <class Int>
+void check_piece_tables(std::uint64_t seed, int scenes, int one_sided) {
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k < scenes; ++k) {
+        int range = 0;
+        LatticeScene ls = test::random_lattice_scene<2>(rng, 25, range);
+        test::make_one_sided<2>(rng, ls, one_sided);
+        const UniformGrid<Int, 2> grid(ls);
+        const auto table = PieceTable<Int>::build(ls, grid, 1'000'000);
+        REQUIRE(table);
+        for (std::uint32_t m = 0; m < ls.elements.size(); ++m) {
+            const LatticeElement& e = ls.elements[m];
+            if (e.absorber) continue;
+            const int t = 1 - e.axis;
+            for (Integer u = e.lo[t]; u <= e.hi[t]; ++u)
+                for (unsigned d = 0; d < 4; ++d) {
+                    Int p[2] = {from_integer<Int>(e.lo[0]), from_integer<Int>(e.lo[1])};
+                    p[t] = from_integer<Int>(u);
+                    const Shot<Int> want = test::brute_force_shot<Int, 2>(ls, p, d),
+                                    got = table->shoot(p, d, m);
+                    INFO("scene " << k << ", mirror " << m << ", u = " << u << ", direction " << d);
+                    REQUIRE(got.escape == want.escape);
+                    if (want.escape) continue;
+                    REQUIRE(got.absorber == want.absorber);
+                    REQUIRE(got.t == want.t);
+                    // Pieces keep no axes met, and past an absorber nothing
+                    // is reflected, so the flip is not theirs to say there.
+                    if (want.absorber) continue;
+                    REQUIRE(got.flip == want.flip);
+                    REQUIRE(test::mirror_holds_hit<Int, 2>(ls, got, p, d));
+                }
+        }
+    }
+}
+
 } // namespace
 
 TEMPLATE_TEST_CASE("every next-hit structure matches brute force in 1D, 2D and 3D",
@@ -183,37 +224,18 @@ TEMPLATE_TEST_CASE("every next-hit structure follows trajectories like brute for
 
 TEMPLATE_TEST_CASE("piece tables match brute force from every lattice point of every mirror",
                    "[shoot][conformance][pieces][slow]", std::int64_t, int128_t, Integer) {
-    // A mirror's pieces answer for the states on that mirror only, so the
-    // queries are all of them: every lattice point in every direction.
+    check_piece_tables<TestType>(11, scenes_for<TestType>(400), 0);
+}
+
+TEMPLATE_TEST_CASE("every next-hit structure skips one-sided elements seen from their back",
+                   "[shoot][conformance][optics]", std::int64_t, int128_t, Integer) {
     using Int = TestType;
-    std::mt19937_64 rng(11);
-    for (int k = 0, scenes = scenes_for<Int>(400); k < scenes; ++k) {
-        int range = 0;
-        const LatticeScene ls = test::random_lattice_scene<2>(rng, 25, range);
-        const UniformGrid<Int, 2> grid(ls);
-        const auto table = PieceTable<Int>::build(ls, grid, 1'000'000);
-        REQUIRE(table);
-        for (std::uint32_t m = 0; m < ls.elements.size(); ++m) {
-            const LatticeElement& e = ls.elements[m];
-            if (e.absorber) continue;
-            const int t = 1 - e.axis;
-            for (Integer u = e.lo[t]; u <= e.hi[t]; ++u)
-                for (unsigned d = 0; d < 4; ++d) {
-                    Int p[2] = {from_integer<Int>(e.lo[0]), from_integer<Int>(e.lo[1])};
-                    p[t] = from_integer<Int>(u);
-                    const Shot<Int> want = test::brute_force_shot<Int, 2>(ls, p, d),
-                                    got = table->shoot(p, d, m);
-                    INFO("scene " << k << ", mirror " << m << ", u = " << u << ", direction " << d);
-                    REQUIRE(got.escape == want.escape);
-                    if (want.escape) continue;
-                    REQUIRE(got.absorber == want.absorber);
-                    REQUIRE(got.t == want.t);
-                    // Pieces keep no axes met, and past an absorber nothing
-                    // is reflected, so the flip is not theirs to say there.
-                    if (want.absorber) continue;
-                    REQUIRE(got.flip == want.flip);
-                    REQUIRE(test::mirror_holds_hit<Int, 2>(ls, got, p, d));
-                }
-        }
-    }
+    check_all_random_shots<Int, 1>(71, scenes_for<Int>(40), 40, 100, 1, 50);
+    check_all_random_shots<Int, 2>(72, scenes_for<Int>(80), 40, 100, 1, 50);
+    check_all_random_shots<Int, 3>(73, scenes_for<Int>(80), 40, 100, 1, 50);
+    check_trajectory<Int, 2>(74, 200, scenes_for<Int>(700), 50);
+    check_trajectory<Int, 3>(75, 300, scenes_for<Int>(700), 50);
+    // The piece tables, whose reverse shots go on through elements that do
+    // not act on the direction they are built for.
+    check_piece_tables<Int>(76, scenes_for<Int>(100), 50);
 }

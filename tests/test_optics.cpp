@@ -43,7 +43,7 @@ TEST_CASE("a one-way mirror makes a rho-shaped cycle", "[optics]") {
         CHECK(a.tail == 1);
         CHECK(a.period() == 2);
         CHECK(a.reflections == 3);
-        CHECK(a.engine == EngineUsed::reference);
+        CHECK(a.engine == EngineUsed::lattice);
     }
     // A target on the tail is hit; one on the cycle too.
     Scene on_tail = s;

@@ -1,6 +1,7 @@
 // The next-hit answer by scanning every element: the oracle for the grid and
 // the BVH. Written out in full on purpose (it does not use Shot::record), so
-// that it shares no logic with the structures it checks.
+// that it shares no logic with the structures it checks. Elements that do
+// not act on the direction (one-sided, seen from their back) are skipped.
 #pragma once
 
 #include "shoot/uniform_grid.hpp"
@@ -13,6 +14,7 @@ shoot::Shot<Int> brute_force_shot(const lattice::LatticeScene& ls, const Int (&p
     using lattice::from_integer;
     shoot::Shot<Int> best;
     for (const lattice::LatticeElement& e : ls.elements) {
+        if (!e.acts_on(negative)) continue; // seen from its back (one-sided)
         const int a = e.axis;
         const bool neg_a = (negative >> a) & 1u;
         Int c = from_integer<Int>(e.lo[a]);

@@ -4,6 +4,7 @@
 // box. Shared so that every structure is checked on the same kind of input.
 #pragma once
 
+#include "engine/event_rule.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "support/portable_random.hpp"
@@ -96,6 +97,26 @@ lattice::LatticeScene random_box_scene(std::mt19937_64& rng, int obstacles, int 
         ls.elements.push_back(e);
     }
     return ls;
+}
+
+// Makes about `percent` percent of the elements one-sided (either sign),
+// their acting masks asked of engine/event_rule's acts_on with the
+// direction of each mask (the lattice's axes are the scene's here).
+template <int M>
+void make_one_sided(std::mt19937_64& rng, lattice::LatticeScene& ls, int percent) {
+    for (lattice::LatticeElement& e : ls.elements) {
+        if (!chance(rng, percent)) continue;
+        Element element;
+        element.axis = e.axis;
+        element.side = chance(rng, 50) ? Side::plus : Side::minus;
+        e.acting = 0;
+        for (unsigned d = 0; d < (1u << M); ++d) {
+            Vector v;
+            for (int j = 0; j < M; ++j) v[j] = ((d >> j) & 1u) ? -1 : 1;
+            if (engine::acts_on(element, v)) e.acting |= 1u << d;
+        }
+        ls.one_sided = true;
+    }
 }
 
 } // namespace orthoray::test

@@ -8,8 +8,10 @@
 
 #include <istream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 
 namespace orthoray {
 
@@ -31,6 +33,8 @@ public:
     // so far are their prefix.
     void attach(SolveOptions& options);
     void visit(const Vector& point, const Vector& direction) override;
+    // The start of a cycle entered after a tail: the verdict's `state`.
+    void cycle_start(const Vector& point, const Vector& direction) override;
     void finish(const Answer& answer);
 
 private:
@@ -42,6 +46,9 @@ private:
     CertificateFormat format_;
     std::uint64_t visits_ = 0;
     Vector first_reflection_point_, first_reflection_direction_;
+    // s_(T+1), when the engine reported it (one-sided elements); else the
+    // cycle starts at the first reflection.
+    std::optional<std::pair<Vector, Vector>> cycle_start_;
     Vector last_direction_;
     std::unique_ptr<InductionSection> induction_;
     bool induced_ = false; // the induction engine has begun recording

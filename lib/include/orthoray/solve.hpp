@@ -52,6 +52,12 @@ class PathSink {
 public:
     virtual ~PathSink() = default;
     virtual void visit(const Vector& point, const Vector& direction) = 0;
+    // A cycle entered after a tail (one-sided elements, docs/optics.md):
+    // the state the cycle starts at, s_(tail + 1), reported once after the
+    // last visit, when a second pass has found it. Called for every cycle
+    // of a scene with one-sided elements (tail 0 included), never for a
+    // two-sided scene, whose cycles start at the first reflection.
+    virtual void cycle_start(const Vector& /*point*/, const Vector& /*direction*/) {}
 };
 
 class InductionObserver; // orthoray/exchange.hpp

@@ -126,6 +126,10 @@ void CertificateWriter::visit(const Vector& point, const Vector& direction) {
     ++visits_;
 }
 
+void CertificateWriter::cycle_start(const Vector& point, const Vector& direction) {
+    cycle_start_.emplace(point, direction);
+}
+
 void CertificateWriter::finish(const Answer& answer) {
     const bool json = format_ == CertificateFormat::jsonl;
     // A statement: `name operands` on its own line, or `"name": operands`
@@ -169,20 +173,30 @@ void CertificateWriter::finish(const Answer& answer) {
         write_vector(last_direction_);
         end_statement();
         break;
-    case Reason::cycle:
+    case Reason::cycle: {
+        // The cycle's first state s_(T+1) and its period; with one-sided
+        // elements also the tail T (docs/certificates.md), which two-sided
+        // certificates leave out (it is 0).
+        const Vector& point = cycle_start_ ? cycle_start_->first : first_reflection_point_;
+        const Vector& direction = cycle_start_ ? cycle_start_->second : first_reflection_direction_;
+        const std::string period = answer.period().get_str(), tail = answer.tail.get_str();
+        const bool with_tail = scene_.has_one_sided() || answer.tail != 0;
         if (json) {
             out_ << ", \"state\": {\"point\": ";
-            write_vector(first_reflection_point_);
+            write_vector(point);
             out_ << ", \"direction\": ";
-            write_vector(first_reflection_direction_);
-            out_ << "}, \"period\": \"" << reflections << '"';
+            write_vector(direction);
+            out_ << "}, \"period\": \"" << period << '"';
+            if (with_tail) out_ << ", \"tail\": \"" << tail << '"';
         } else {
             out_ << "state";
-            write_vector(first_reflection_point_);
-            write_vector(first_reflection_direction_);
-            out_ << "\nperiod " << reflections << '\n';
+            write_vector(point);
+            write_vector(direction);
+            out_ << "\nperiod " << period << '\n';
+            if (with_tail) out_ << "tail " << tail << '\n';
         }
         break;
+    }
     case Reason::limit:
         statement("partial") << (json ? "true" : "");
         end_statement();

@@ -3,10 +3,22 @@
 // Both keep O(1) states, so memory never grows with the number of reflections.
 #pragma once
 
+#include "orthoray/solve.hpp" // CycleDetector
+
 #include <cstdint>
 #include <optional>
 
 namespace orthoray::engine {
+
+// The detector an engine runs: the one asked for when the step map is
+// injective (every element two-sided), else Brent's. Comparing with the
+// first state is only sound for an injective map: after a tail the
+// trajectory never sees its first state again and would run forever. Every
+// engine picks its detector through this function, so no path leads to the
+// first-state detector on a scene with one-sided elements.
+constexpr CycleDetector detector_for(bool one_sided, CycleDetector asked) {
+    return one_sided ? CycleDetector::brent : asked;
+}
 
 // The step map on states is injective (reflection is reversible), so a
 // periodic trajectory is purely periodic from reflection 1 on: it returns to
@@ -56,5 +68,18 @@ private:
     State saved_{};
     std::uint64_t power_ = 1, distance_ = 0;
 };
+
+// The reflection at which BrentDetector reports the period of a trajectory
+// whose cycle starts at state mu >= 1 with period lambda >= 1. The saved
+// state sits at reflections 1, 2, 4, 8, ...; from 2^k it is compared with
+// the next 2^k states, so the first saved state on the cycle (2^k >= mu)
+// whose window covers a period (2^k >= lambda) meets itself again lambda
+// reflections later. Lets an engine that knows mu and lambda without
+// stepping (the state graph) stop where the simulations stop.
+constexpr std::uint64_t brent_detection(std::uint64_t mu, std::uint64_t lambda) {
+    std::uint64_t saved = 1;
+    while (saved < mu || saved < lambda) saved *= 2;
+    return saved + lambda;
+}
 
 } // namespace orthoray::engine

@@ -8,6 +8,11 @@
 // among a mirror's few pieces but cost a preprocessing pass, so by default a
 // run starts on the grid and switches to the tables only if it has not ended
 // after grid_phase(n) reflections. Crowded scenes get the BVH.
+//
+// One-sided elements: every shooter meets only the elements acting on the
+// ray's direction (filtered when it is built, docs/shooting.md), so the steps
+// are the acting rule's. The step map may then be non-injective: Brent's
+// detector finds the period, and a second pass (tail_pass) the tail.
 #include "engine/lattice_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
@@ -117,15 +122,20 @@ public:
         // One bound for both reasons to stop stepping.
         const std::uint64_t stop =
             options_.max_steps ? std::min(until, *options_.max_steps) : until;
+        // An answer; a cycle of a scene with one-sided elements first has
+        // its tail found.
+        auto ended = [&](Step step) {
+            if (step == Step::answered && period_) tail_pass(shoot.fresh(), *period_);
+            return step == Step::answered;
+        };
         if (pending_) {
             const shoot::Shot<Int> shot = *pending_;
             pending_.reset();
-            if (const Step step = take(shot, stop); step != Step::next)
-                return step == Step::answered;
+            if (const Step step = take(shot, stop); step != Step::next) return ended(step);
         }
         while (true)
             if (const Step step = take(shoot(s_, mirror_), stop); step != Step::next)
-                return step == Step::answered;
+                return ended(step);
     }
 
     // advance() in chunks, polling the monitor between them (without one, a
@@ -186,6 +196,72 @@ private:
 
     std::optional<shoot::Shot<Int>> pending_; // computed, reflection not yet taken
 
+    // One-sided elements: the state and mirror after reflection 1, where the
+    // tail pass starts, and the period once Brent's detector has found it.
+    State<Int, M> first_{};
+    std::uint32_t first_mirror_ = no_mirror;
+    std::optional<std::uint64_t> period_;
+
+    // mu of docs/optics.md: the least i >= 1 with s_i = s_(i + lambda). Two
+    // walkers, s_i and s_(i + lambda), step side by side from i = 1 (the
+    // second pass of Brent's method) with their own copies of `shoot`; O(1)
+    // states. The cycle is known, so no walker escapes or stops, and there
+    // are fewer than 2 r steps (r: the reflections taken, >= mu + lambda).
+    // The monitor is polled between chunks of about 10 ms, as in stepping.
+    template <class Shoot>
+    void tail_pass(const Shoot& fresh, std::uint64_t lambda) {
+        struct Walker {
+            State<Int, M> s;
+            std::uint32_t mirror;
+            Shoot next_hit;
+            void step() {
+                const shoot::Shot<Int> shot = next_hit(s, mirror);
+                for (int j = 0; j < M; ++j) s.p[j] += sign<Int>(s.negative, j) * shot.t;
+                s.negative ^= shot.flip;
+                mirror = shot.mirror;
+            }
+        };
+        Walker behind{first_, first_mirror_, fresh}, ahead = behind;
+        using Clock = std::chrono::steady_clock;
+        std::uint64_t chunk = 64, done = 0;
+        auto begin = Clock::now();
+        // One pair of steps (or one step of `ahead` while it runs ahead);
+        // false when the monitor stopped the run.
+        auto paced = [&] {
+            if (++done < chunk || !options_.monitor) return true;
+            done = 0;
+            const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+            if (seconds < 0.005 && chunk < (std::uint64_t{1} << 24)) chunk *= 2;
+            if (seconds > 0.02 && chunk > 1) chunk /= 2;
+            begin = Clock::now();
+            if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
+                answer_.limit = *limit;
+                finish(Reason::limit);
+                return false;
+            }
+            return true;
+        };
+        for (std::uint64_t i = 0; i < lambda; ++i) {
+            ahead.step();
+            if (!paced()) return;
+        }
+        std::uint64_t mu = 1;
+        while (!(behind.s == ahead.s)) {
+            behind.step();
+            ahead.step();
+            ++mu;
+            if (!paced()) return;
+        }
+        answer_.tail = Integer(static_cast<unsigned long>(mu - 1));
+        reflections_ = mu - 1 + lambda;
+        finish(Reason::cycle);
+        if (options_.path) {
+            lattice::Coords c;
+            for (int j = 0; j < M; ++j) c[j] = lattice::to_integer(behind.s.p[j]);
+            options_.path->cycle_start(ls_.point(c), ls_.direction(behind.s.negative));
+        }
+    }
+
     enum class Step { next, answered, paused };
     Step answered(Reason reason) {
         finish(reason);
@@ -215,7 +291,16 @@ private:
         mirror_ = shot.mirror;
         ++reflections_;
         if (options_.path) report();
+        if (reflections_ == 1) {
+            first_ = s_;
+            first_mirror_ = mirror_;
+        }
         if (auto period = detector_.observe(s_, reflections_)) {
+            if (ls_.one_sided) { // not yet: advance() runs the tail pass
+                period_ = *period;
+                return Step::answered;
+            }
+            // Injective: purely periodic, the tail is 0 (semantics.md).
             reflections_ = *period;
             return answered(Reason::cycle);
         }
@@ -235,6 +320,37 @@ private:
     }
 };
 
+// How a run asks for its next hit: shoot(state, mirror) with the mirror the
+// state lies on (no_mirror before the first reflection). fresh() is the same
+// shooter with no memory of a trajectory, for the tail pass's walkers.
+template <class Int, int M, class NextHit>
+struct Stateless {
+    const NextHit* next_hit;
+    shoot::Shot<Int> operator()(const State<Int, M>& s, std::uint32_t) const {
+        return next_hit->shoot(s.p, s.negative);
+    }
+    Stateless fresh() const { return *this; }
+};
+
+// The piece tables follow the ray with a cursor, placed at its first
+// reflection (before it, the grid answers).
+template <class Int>
+struct TableWalk {
+    const shoot::PieceTable<Int>* table;
+    const shoot::UniformGrid<Int, 2>* grid;
+    bool placed = false;
+    typename shoot::PieceTable<Int>::Cursor where{};
+    shoot::Shot<Int> operator()(const State<Int, 2>& s, std::uint32_t mirror) {
+        if (!placed) {
+            if (mirror == no_mirror) return grid->shoot(s.p, s.negative);
+            where = table->at(mirror, s.negative);
+            placed = true;
+        }
+        return table->shoot(s.p, where);
+    }
+    TableWalk fresh() const { return {table, grid}; }
+};
+
 double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
@@ -243,9 +359,7 @@ double seconds_since(std::chrono::steady_clock::time_point begin) {
 template <class Int, int M, class Detector, class NextHit>
 Answer finish_with(Run<Int, M, Detector>& run, ShooterUsed name, const NextHit& shooter) {
     run.answer().shooter = name;
-    run.advance_in_chunks(
-        [&](const State<Int, M>& s, std::uint32_t) { return shooter.shoot(s.p, s.negative); },
-        ~std::uint64_t{0});
+    run.advance_in_chunks(Stateless<Int, M, NextHit>{&shooter}, ~std::uint64_t{0});
     return run.answer();
 }
 
@@ -279,9 +393,10 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     setup.cells = grid.cell_count();
     run.answer().shooter = ShooterUsed::grid;
     if (run.stopped_by_monitor()) return run.answer();
-    // The induction engine stands on the tables and starts from state 1.
+    // The induction engine stands on the tables and starts from state 1; it
+    // needs a bijection, so one-sided scenes are simulated (docs/induction.md).
     const bool induce =
-        ls.scene->dim == 2 &&
+        ls.scene->dim == 2 && !ls.one_sided &&
         (options.engine == Engine::induction ||
          (options.engine == Engine::automatic &&
           (options.shooter == Shooter::automatic || options.shooter == Shooter::pieces)));
@@ -294,9 +409,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                                   ? 0
                                   : at_step_cost(grid_phase(grid.size()), ls.magnitude);
         if (induce && (options.engine == Engine::induction || first == 0)) first = 1;
-        auto by_grid = [&](const State<Int, M>& s, std::uint32_t) {
-            return grid.shoot(s.p, s.negative);
-        };
+        const Stateless<Int, M, shoot::UniformGrid<Int, M>> by_grid{&grid};
         if (run.advance_in_chunks(by_grid, first)) return run.answer();
         // Piece tables may grow quadratic with crossings: past 64 pieces a
         // mirror on average, stay on the grid.
@@ -314,16 +427,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
             setup.pieces = table->size();
             run.answer().shooter = ShooterUsed::pieces;
             // Until the ray first reflects, the tables cannot say where it is.
-            bool placed = false;
-            typename shoot::PieceTable<Int>::Cursor where;
-            auto by_table = [&](const State<Int, M>& s, std::uint32_t mirror) {
-                if (!placed) {
-                    if (mirror == no_mirror) return grid.shoot(s.p, s.negative);
-                    where = table->at(mirror, s.negative);
-                    placed = true;
-                }
-                return table->shoot(s.p, where);
-            };
+            TableWalk<Int> by_table{&*table, &grid};
             if (induce) {
                 // Auto: step on the tables about as long as inducing would
                 // take, then induce; no answer costs more than twice the
@@ -408,9 +512,12 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
     }
 }
 
+// The detector follows the scene, as in the reference tracer, so that both
+// stop at the same reflection under a cap even when the ray can meet none
+// of the one-sided elements (then ls.one_sided is false and the tail 0).
 template <class Int, int M>
 Answer run_with_detector(const LatticeScene& ls, const SolveOptions& options) {
-    if (options.cycle_detector == CycleDetector::brent)
+    if (detector_for(ls.scene->has_one_sided(), options.cycle_detector) == CycleDetector::brent)
         return run<Int, M, BrentDetector<State<Int, M>>>(ls, options);
     return run<Int, M, FirstStateDetector<State<Int, M>>>(ls, options);
 }

@@ -78,12 +78,13 @@ RationalState next_state(const Scene& scene, const RationalState& s) {
 // mu of docs/optics.md: the least i >= 1 with s_i = s_{i + lambda}, found
 // by walking s_i and s_{i + lambda} side by side from i = 1 (the second pass
 // of Brent's and Floyd's methods). O(1) states are kept.
-std::uint64_t cycle_start(const Scene& scene, const RationalState& first, std::uint64_t lambda) {
-    RationalState behind = first, ahead = first;
+// `first` ends as s_mu, the state the cycle starts at.
+std::uint64_t cycle_start(const Scene& scene, RationalState& first, std::uint64_t lambda) {
+    RationalState ahead = first;
     for (std::uint64_t i = 0; i < lambda; ++i) ahead = next_state(scene, ahead);
     std::uint64_t mu = 1;
-    while (!(behind == ahead)) {
-        behind = next_state(scene, behind);
+    while (!(first == ahead)) {
+        first = next_state(scene, first);
         ahead = next_state(scene, ahead);
         ++mu;
     }
@@ -137,6 +138,7 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
                 if (!scene.has_one_sided()) return finish(Reason::cycle, *period);
                 const std::uint64_t tail = cycle_start(scene, first, *period) - 1;
                 answer.tail = Integer(static_cast<unsigned long>(tail));
+                if (options.path) options.path->cycle_start(first.p, first.v);
                 return finish(Reason::cycle, tail + *period);
             }
         }
@@ -152,7 +154,7 @@ Answer solve_by_reference(const Scene& scene, const SolveOptions& options) {
     // One-sided elements make the step map non-injective: a trajectory may
     // enter its cycle after a tail and never see its first state again, so
     // the first-state detector would loop forever. Brent's is forced.
-    if (options.cycle_detector == CycleDetector::brent || scene.has_one_sided())
+    if (detector_for(scene.has_one_sided(), options.cycle_detector) == CycleDetector::brent)
         return trace<BrentDetector<RationalState>>(scene, options);
     return trace<FirstStateDetector<RationalState>>(scene, options);
 }

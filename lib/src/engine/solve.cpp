@@ -1,6 +1,7 @@
 // solve(): picks the engine the options ask for.
 #include "orthoray/solve.hpp"
 
+#include "engine/cycle_detector.hpp"
 #include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_tracer.hpp"
@@ -14,7 +15,8 @@ namespace {
 
 // The graph engine answers all at once; to honour max_steps like the
 // simulations, it reports a limit when they would have needed more
-// reflections (a cycle of period L is seen at reflection L + 1).
+// reflections (a cycle of period L is seen at reflection L + 1, a rho cycle
+// where Brent's detector sees it).
 Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     if (options.path) throw std::invalid_argument("the graph engine does not write certificates");
     Answer answer;
@@ -34,6 +36,10 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     answer = report->answer;
     if (answer.decided() && options.max_steps) {
         Integer needed = answer.reflections + (answer.reason == Reason::cycle ? 1 : 0);
+        // With one-sided elements the simulations run Brent's detector.
+        if (answer.reason == Reason::cycle && scene.has_one_sided())
+            needed = Integer(static_cast<unsigned long>(
+                engine::brent_detection(answer.tail.get_ui() + 1, answer.period().get_ui())));
         Integer cap = Integer(static_cast<unsigned long>(*options.max_steps));
         if (needed > cap) {
             answer.reason = Reason::limit;
@@ -63,18 +69,18 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // The illumination question (several rays or targets, splitters) and
-    // one-sided elements (a non-injective step map) are decided by the
-    // reference tracer (the illumination question also by the state graph
-    // when asked for): the lattice and induction engines assume two-sided
-    // mirrors and one trajectory. The answer's engine says which ran.
-    if (options.path && (!scene.single_trajectory() || scene.has_one_sided()))
-        throw std::invalid_argument("certificates for scenes with splitters, one-sided elements "
-                                    "or several rays or targets are not supported yet");
+    // The illumination question (several rays or targets, splitters) is
+    // decided by its own search (or the state graph when asked for). A
+    // single trajectory goes to the engine asked for: with one-sided
+    // elements the lattice engine filters them by side and finds the tail
+    // (docs/optics.md), and induction, which needs a bijection, is not used
+    // (the answer's engine says lattice).
+    if (options.path && !scene.single_trajectory())
+        throw std::invalid_argument("certificates for scenes with splitters or several rays or "
+                                    "targets are not supported yet");
     if (!scene.single_trajectory())
         return options.engine == Engine::graph ? solve_illumination_by_graph(scene, options)
                                                : engine::solve_illumination(scene, options);
-    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
     switch (options.engine) {
     case Engine::reference:
         return engine::solve_by_reference(scene, options);

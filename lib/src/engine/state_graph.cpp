@@ -136,12 +136,15 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
     } else {
         // The walk from the start ends in a cycle, and its farthest vertex
         // lies on it: the size of that vertex's component is the period.
+        // Every state reached is on the tail or the cycle, each once, so the
+        // tail is the rest (0 for an injective step map, docs/optics.md).
         std::vector<std::size_t> component(n);
         boost::strong_components(g, component.data());
         std::size_t size = 0;
         for (std::size_t u = 0; u < n; ++u) size += component[u] == component[farthest];
         answer.reason = Reason::cycle;
-        answer.reflections = as_integer(size);
+        answer.reflections = as_integer(report.reachable);
+        answer.tail = as_integer(report.reachable - size);
     }
     return report;
 }

@@ -1,5 +1,7 @@
 #include "lattice/lattice_scene.hpp"
 
+#include "engine/event_rule.hpp"
+
 #include <algorithm>
 
 namespace orthoray::lattice {
@@ -86,6 +88,13 @@ LatticeScene make_lattice(const Scene& scene) {
             track(le.lo[i]);
             track(le.hi[i]);
         }
+        // Scaling is by positive factors, so a mask's bit i set means a
+        // negative component on scene axis active[i]: the acting rule is
+        // asked about the scene direction itself, not a copy of it.
+        le.acting = 0;
+        for (unsigned d = 0; d < (1u << out.dim); ++d)
+            if (engine::acts_on(e, out.direction(d))) le.acting |= 1u << d;
+        if (le.acting != (1u << (1u << out.dim)) - 1) out.one_sided = true;
         out.elements.push_back(std::move(le));
     }
     return out;

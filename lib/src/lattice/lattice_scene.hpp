@@ -27,6 +27,12 @@ struct LatticeElement {
     bool absorber = false;
     int axis = 0;  // normal axis, in active coordinates
     Coords lo, hi; // closed box; lo[axis] == hi[axis]
+    // Bit d set: the element acts on a ray moving in direction mask d
+    // (engine/event_rule's acts_on, asked once per mask by make_lattice).
+    // Every bit for a two-sided element (the default); half of them for a
+    // one-sided one.
+    unsigned acting = ~0u;
+    bool acts_on(unsigned negative) const { return (acting >> negative) & 1u; }
 };
 
 struct LatticeScene {
@@ -39,6 +45,9 @@ struct LatticeScene {
     bool target_reachable = false; // false when the target is off the ray's fixed coordinates
     Coords target;
     Integer magnitude; // max |value| over elements, start and target
+    // Some element acts on only some directions (a one-sided element the ray
+    // can meet): the step map may be non-injective (docs/optics.md).
+    bool one_sided = false;
     const Scene* scene = nullptr;
 
     // Back to scene coordinates (exact): a lattice point, a direction mask.

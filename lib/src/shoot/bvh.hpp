@@ -20,6 +20,10 @@
 // and the answer (t, flip, met, absorber) equals a scan of all elements.
 // Values computed are differences of two coordinates (|.| <= 2B) and the
 // centre sums lo + hi (<= 2B), within lattice_int.hpp's 8B bound.
+//
+// With one-sided elements (LatticeElement::acting) there is one tree per
+// direction, over the elements acting on it, so a shot never meets an
+// element seen from its back and the traversal tests nothing extra.
 #pragma once
 
 #include "lattice/lattice_int.hpp"
@@ -46,8 +50,12 @@ public:
     // Same contract as UniformGrid::shoot.
     Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
 
-    std::size_t node_count() const { return nodes_.size(); }
-    std::size_t size() const { return items_.size(); }
+    std::size_t node_count() const {
+        std::size_t total = 0;
+        for (const Tree& tree : trees_) total += tree.nodes.size();
+        return total;
+    }
+    std::size_t size() const { return elements_; }
 
     // At most this many elements a leaf. On random 3D scenes of 10^3..10^4
     // rectangles, 2 was 10-20% faster than 4 (and about even with 1).
@@ -60,16 +68,24 @@ private:
         std::uint32_t first; // leaf: first item; interior: index of the right child
         std::uint32_t count; // leaf: number of items (> 0); interior: 0
     };
-    std::vector<Item> items_; // in leaf order
-    std::vector<Node> nodes_; // depth first; nodes_[0] is the root
+    struct Tree {
+        std::vector<Item> items; // in leaf order
+        std::vector<Node> nodes; // depth first; nodes[0] is the root
+    };
+    std::vector<Tree> trees_;     // one, or one per direction with one-sided elements
+    unsigned tree_of_[1u << M]{}; // direction -> its tree
+    std::size_t elements_ = 0;
 
     // Each split halves the element count, so the tree over n < 2^32
     // elements has at most 33 levels, and the traversal, which pushes at most
     // one pending node a level, never needs more than 32 stack entries.
     static constexpr int stack_size = 64;
 
-    std::uint32_t build(std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
-                        const std::vector<Item>& items, const std::vector<Int>& centre);
+    static void plant(Tree& tree, const std::vector<Item>& items, const std::vector<Int>& centre,
+                      std::vector<std::uint32_t> order);
+    static std::uint32_t build(Tree& tree, std::vector<std::uint32_t>& order, std::uint32_t begin,
+                               std::uint32_t end, const std::vector<Item>& items,
+                               const std::vector<Int>& centre);
 
     // The ray's parameter interval in a closed box: [enter, leave].
     template <unsigned Negative>
@@ -99,6 +115,7 @@ private:
 template <class Int, int M>
 BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& scene) {
     const std::size_t n = scene.elements.size();
+    elements_ = n;
     if (n == 0) return;
     std::vector<Item> items;
     items.reserve(n);
@@ -107,24 +124,45 @@ BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& sce
         const Item& it = items.emplace_back(scene.elements[k], static_cast<std::uint32_t>(k));
         for (int j = 0; j < M; ++j) centre[k * M + j] = Int(it.lo[j] + it.hi[j]);
     }
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    nodes_.reserve(2 * ((n + leaf_size - 1) / leaf_size));
-    build(order, 0, static_cast<std::uint32_t>(n), items, centre);
-    items_.reserve(n);
-    for (std::uint32_t k : order) items_.push_back(std::move(items[k]));
+    if (!scene.one_sided) {
+        std::vector<std::uint32_t> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        plant(trees_.emplace_back(), items, centre, std::move(order));
+        return;
+    }
+    for (unsigned d = 0; d < (1u << M); ++d) {
+        std::vector<std::uint32_t> order;
+        for (std::uint32_t k = 0; k < n; ++k)
+            if (items[k].acts_on(d)) order.push_back(k);
+        tree_of_[d] = static_cast<unsigned>(trees_.size());
+        plant(trees_.emplace_back(), items, centre, std::move(order));
+    }
+}
+
+// A tree over the elements `order` lists (none: an empty tree).
+template <class Int, int M>
+void BoundingVolumeHierarchy<Int, M>::plant(Tree& tree, const std::vector<Item>& items,
+                                            const std::vector<Int>& centre,
+                                            std::vector<std::uint32_t> order) {
+    const std::size_t n = order.size();
+    if (n == 0) return;
+    tree.nodes.reserve(2 * ((n + leaf_size - 1) / leaf_size));
+    build(tree, order, 0, static_cast<std::uint32_t>(n), items, centre);
+    tree.items.reserve(n);
+    for (std::uint32_t k : order) tree.items.push_back(items[k]);
 }
 
 // Builds the subtree over order[begin, end) and returns its node's index.
 template <class Int, int M>
-std::uint32_t BoundingVolumeHierarchy<Int, M>::build(std::vector<std::uint32_t>& order,
+std::uint32_t BoundingVolumeHierarchy<Int, M>::build(Tree& tree, std::vector<std::uint32_t>& order,
                                                      std::uint32_t begin, std::uint32_t end,
                                                      const std::vector<Item>& items,
                                                      const std::vector<Int>& centre) {
-    const auto self = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.emplace_back();
+    std::vector<Node>& nodes = tree.nodes;
+    const auto self = static_cast<std::uint32_t>(nodes.size());
+    nodes.emplace_back();
     {
-        Node& node = nodes_.back();
+        Node& node = nodes.back();
         const Item& head = items[order[begin]];
         for (int j = 0; j < M; ++j) {
             node.lo[j] = head.lo[j];
@@ -139,13 +177,13 @@ std::uint32_t BoundingVolumeHierarchy<Int, M>::build(std::vector<std::uint32_t>&
         }
     }
     if (end - begin <= leaf_size) {
-        nodes_[self].first = begin;
-        nodes_[self].count = end - begin;
+        nodes[self].first = begin;
+        nodes[self].count = end - begin;
         return self;
     }
     int axis = 0;
     {
-        const Node& node = nodes_[self];
+        const Node& node = nodes[self];
         Int longest = node.hi[0] - node.lo[0];
         for (int j = 1; j < M; ++j) {
             Int extent = node.hi[j] - node.lo[j];
@@ -157,10 +195,10 @@ std::uint32_t BoundingVolumeHierarchy<Int, M>::build(std::vector<std::uint32_t>&
                      [&](std::uint32_t a, std::uint32_t b) {
                          return centre[a * M + axis] < centre[b * M + axis];
                      });
-    build(order, begin, mid, items, centre); // the left child is self + 1
-    const std::uint32_t right = build(order, mid, end, items, centre);
-    nodes_[self].first = right; // nodes_ may have grown: index again
-    nodes_[self].count = 0;
+    build(tree, order, begin, mid, items, centre); // the left child is self + 1
+    const std::uint32_t right = build(tree, order, mid, end, items, centre);
+    nodes[self].first = right; // nodes may have grown: index again
+    nodes[self].count = 0;
     return self;
 }
 
@@ -175,14 +213,17 @@ template <class Int, int M>
 template <unsigned Negative>
 Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const {
     Shot<Int> shot;
-    if (nodes_.empty()) return shot;
+    if (trees_.empty()) return shot;
+    const Tree& tree = trees_[tree_of_[Negative]];
+    const std::vector<Node>& nodes = tree.nodes;
+    if (nodes.empty()) return shot;
     auto neg = [](int j) { return ((Negative >> j) & 1u) != 0; };
 
     // Every hit lies in the root's box, so at t <= its `leave`: `bound` is
     // that, then the smallest t met so far. A node (or an element) can hold a
     // hit at the smallest t only if it can at some t <= bound.
     Int bound, enter;
-    slab<Negative>(nodes_[0], p, enter, bound);
+    slab<Negative>(nodes[0], p, enter, bound);
     if (bound < enter || bound <= 0) return shot;
 
     // Nodes still to visit, with the t at which the ray enters them.
@@ -191,10 +232,10 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const
     int top = 0;
     std::uint32_t current = 0;
     while (true) {
-        const Node& node = nodes_[current];
+        const Node& node = nodes[current];
         if (node.count != 0) {
             for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-                const Item& it = items_[k];
+                const Item& it = tree.items[k];
                 const int a = M == 1 ? 0 : it.axis; // 0 in 1D: says so to the compiler
                 Int t = neg(a) ? Int(p[a] - it.lo[a]) : Int(it.lo[a] - p[a]);
                 if (t <= 0 || bound < t) continue;
@@ -213,8 +254,8 @@ Shot<Int> BoundingVolumeHierarchy<Int, M>::shoot_signed(const Int (&p)[M]) const
             // the other one pushed if it may hold a hit too.
             const std::uint32_t left = current + 1, right = node.first;
             Int enter_l, leave_l, enter_r, leave_r;
-            slab<Negative>(nodes_[left], p, enter_l, leave_l);
-            slab<Negative>(nodes_[right], p, enter_r, leave_r);
+            slab<Negative>(nodes[left], p, enter_l, leave_l);
+            slab<Negative>(nodes[right], p, enter_r, leave_r);
             // Bitwise on purpose: no branches on unpredictable comparisons.
             const bool hit_l = static_cast<int>(!(leave_l < enter_l)) &
                                static_cast<int>(0 < leave_l) & static_cast<int>(!(bound < enter_l));

@@ -30,6 +30,10 @@
 // members with key > D* cannot be met at or before it. All
 // arithmetic is exact integer arithmetic on values bounded as in
 // lattice_int.hpp (|a_j| <= 2B, offsets into the grid <= 4B, keys <= 3B).
+//
+// Each direction has its own bundle, so one-sided elements cost nothing at
+// query time: a bundle registers only the elements that act on its
+// direction (LatticeElement::acting), and the others are never seen.
 #pragma once
 
 #include "shoot/element_box.hpp"
@@ -95,6 +99,7 @@ private:
         std::int64_t cells[M]{};            // cells on axis j
         Int reach{};                        // largest cell side minus one
         Int far{};                          // larger than every element's depth
+        bool empty = true;                  // no element acts on this direction
         std::vector<std::uint32_t> offsets; // CSR: cell -> members, sorted by key
         std::vector<Member> members;
     };
@@ -155,7 +160,12 @@ template <class Int, int M>
 void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
                                      std::int64_t cells_per_element) {
     bundle.offsets.assign(2, 0);
-    if (items_.empty()) return;
+    // The elements this direction's rays can meet: those acting on it.
+    std::vector<std::uint32_t> acting;
+    for (std::uint32_t e = 0; e < items_.size(); ++e)
+        if (items_[e].acts_on(negative)) acting.push_back(e);
+    if (acting.empty()) return;
+    bundle.empty = false;
     const Int s0 = sigma(negative, 0);
     // The shadow of an element on the cross-section: a_j = x_j - r_j x_0 with
     // r_j = sigma_j sigma_0, over the element's box; its bounding box is
@@ -167,15 +177,15 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
         hi = it.hi[j] - (x_lo < x_hi ? x_lo : x_hi);
     };
     for (int j = 0; j < S; ++j)
-        for (std::size_t e = 0; e < items_.size(); ++e) {
+        for (std::size_t k = 0; k < acting.size(); ++k) {
             Int lo, hi;
-            shadow(items_[e], j + 1, lo, hi);
-            if (e == 0 || lo < bundle.origin[j]) bundle.origin[j] = lo;
-            if (e == 0 || bundle.limit[j] < hi) bundle.limit[j] = hi;
+            shadow(items_[acting[k]], j + 1, lo, hi);
+            if (k == 0 || lo < bundle.origin[j]) bundle.origin[j] = lo;
+            if (k == 0 || bundle.limit[j] < hi) bundle.limit[j] = hi;
         }
     // k cells a side with k^S >= cells_per_element * n; each side a power of two.
     std::int64_t k = 1;
-    const std::int64_t want = cells_per_element * static_cast<std::int64_t>(items_.size());
+    const std::int64_t want = cells_per_element * static_cast<std::int64_t>(acting.size());
     while (true) {
         std::int64_t p = 1;
         for (int j = 0; j < S; ++j) p *= k;
@@ -235,7 +245,8 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
             ++i[j];
         }
     };
-    for (const Item& it : items_) {
+    for (const std::uint32_t e : acting) {
+        const Item& it = items_[e];
         const Int d = s0 * it.lo[0] < s0 * it.hi[0] ? Int(s0 * it.hi[0]) : Int(s0 * it.lo[0]);
         if (bundle.far < d) bundle.far = d;
     }
@@ -247,13 +258,13 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
     // the finer grid stays under the limit and is faster (docs/shooting.md).
     auto count = [&] {
         bundle.offsets.assign(static_cast<std::size_t>(total) + 1, 0);
-        for (std::uint32_t e = 0; e < items_.size(); ++e)
+        for (const std::uint32_t e : acting)
             for_each_cell(e, [&](std::int64_t c, const Int&) { ++bundle.offsets[c + 1]; });
         std::size_t registrations = 0;
         for (std::uint32_t n : bundle.offsets) registrations += n;
         return registrations;
     };
-    while (count() > 10 * items_.size() && k > 1) {
+    while (count() > 10 * acting.size() && k > 1) {
         k /= 2;
         lay_out();
     }
@@ -261,7 +272,7 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
         bundle.offsets[c] += bundle.offsets[c - 1];
     bundle.members.resize(bundle.offsets.back());
     std::vector<std::uint32_t> fill(bundle.offsets.begin(), bundle.offsets.end() - 1);
-    for (std::uint32_t e = 0; e < items_.size(); ++e)
+    for (const std::uint32_t e : acting)
         for_each_cell(e, [&](std::int64_t c, const Int& key) {
             bundle.members[fill[c]++] =
                 Member{key, Int(sigma(negative, items_[e].axis) * items_[e].lo[items_[e].axis]), e,
@@ -276,8 +287,8 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
 template <class Int, int M>
 Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
     Shot<Int> shot;
-    if (items_.empty()) return shot;
     const Bundle& bundle = bundles_[negative];
+    if (bundle.empty) return shot;
     Int s[M];
     for (int j = 0; j < M; ++j) s[j] = sigma(negative, j);
     std::int64_t c = 0;

@@ -23,14 +23,18 @@ struct ElementBox {
     std::uint32_t index; // in the lattice scene
     std::uint8_t axis;   // normal axis
     bool absorber;
+    std::uint8_t acting; // LatticeElement::acting: the direction masks it acts on
 
     ElementBox(const LatticeElement& e, std::uint32_t scene_index)
-        : index(scene_index), axis(static_cast<std::uint8_t>(e.axis)), absorber(e.absorber) {
+        : index(scene_index), axis(static_cast<std::uint8_t>(e.axis)), absorber(e.absorber),
+          acting(static_cast<std::uint8_t>(e.acting)) {
         for (int j = 0; j < M; ++j) {
             lo[j] = from_integer<Int>(e.lo[j]);
             hi[j] = from_integer<Int>(e.hi[j]);
         }
     }
+
+    bool acts_on(unsigned negative) const { return (acting >> negative) & 1u; }
 
     // Whether the point p + t * sigma lies in the box. When t was taken
     // from the element's plane the point is exactly the offset on the

@@ -24,6 +24,14 @@
 // of that lower envelope, and those vertices are visible events. Each piece
 // (a breakpoint itself, or an open run between two) is resolved with one
 // forward grid shot; adjacent pieces with the same map are merged.
+//
+// One-sided elements. The map of direction d only knows the elements that
+// act on d (the grid's per-direction lists), so only their ends and
+// crossings can change it, and the reverse shot from such an event must find
+// every mirror whose rays in direction d reach it: it goes on through the
+// elements that do not act on d (a one-way mirror the ray leaves in d is
+// one of them; its rays pass the mirrors behind it unseen) and stops at the
+// first that does, which hides everything behind it.
 #pragma once
 
 #include "shoot/uniform_grid.hpp"
@@ -148,6 +156,15 @@ private:
     std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)
     std::vector<Cursor> slots_;              // (element * 4 + direction) -> its pieces
     std::vector<std::uint8_t> tangent_;      // the axis a position on the element runs along
+    std::vector<std::uint8_t> acting_;       // LatticeElement::acting, per element
+
+    // From p backwards along direction d: calls visit(q) at each point q
+    // where the reverse ray meets some element (of any side), nearest first,
+    // until visit returns true (q holds an element acting on d, which hides
+    // what lies behind it from rays in direction d) or the ray leaves.
+    template <class Visit>
+    static void walk_back(const UniformGrid<Int, 2>& grid, const Int (&p)[2], unsigned d,
+                          Visit&& visit);
 };
 
 template <class Int>
@@ -160,6 +177,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         Int lo[2], hi[2];
         int axis;
         bool absorber;
+        unsigned acting; // LatticeElement::acting
     };
     std::vector<Box> box(n);
     for (std::uint32_t e = 0; e < n; ++e) {
@@ -169,6 +187,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         }
         box[e].axis = elements[e].axis;
         box[e].absorber = elements[e].absorber;
+        box[e].acting = elements[e].acting;
     }
 
     // Events: every element's two ends, and every crossing of a vertical and
@@ -209,8 +228,11 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
 
     PieceTable table;
     table.tangent_.resize(n);
-    for (std::uint32_t e = 0; e < n; ++e)
+    table.acting_.resize(n);
+    for (std::uint32_t e = 0; e < n; ++e) {
         table.tangent_[e] = static_cast<std::uint8_t>(1 - box[e].axis);
+        table.acting_[e] = static_cast<std::uint8_t>(box[e].acting);
+    }
 
     // Breakpoints as (mirror * 4 + direction, position) pairs in one array,
     // sorted once: far cheaper than a small vector per mirror and direction.
@@ -241,15 +263,25 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
             breaks.push_back(Break{m * 4 + d, no_event, box[m].lo[t]});
             breaks.push_back(Break{m * 4 + d, no_event, box[m].hi[t]});
         }
+    // Whether some element at p acts on direction d (always, without
+    // one-sided elements).
+    auto acted_on_at = [&](const Int(&p)[2], unsigned d) {
+        if (!scene.one_sided) return true;
+        bool acted = false;
+        grid.for_each_element_at(p, [&](std::uint32_t f) {
+            if ((box[f].acting >> d) & 1u) acted = true;
+        });
+        return acted;
+    };
     for (std::uint32_t e = 0; e < events.size(); ++e) {
         const Int p[2] = {events[e][0], events[e][1]};
         add_breaks_at(p, 0, 3, no_event);
         for (unsigned d = 0; d < 4; ++d) {
-            const Shot<Int> back = grid.shoot(p, d ^ 3u);
-            if (back.escape) continue;
-            const Int q[2] = {(d & 1u) ? Int(p[0] + back.t) : Int(p[0] - back.t),
-                              (d & 2u) ? Int(p[1] + back.t) : Int(p[1] - back.t)};
-            add_breaks_at(q, d, d, e);
+            if (!acted_on_at(p, d)) continue; // rays in direction d pass it unseen
+            walk_back(grid, p, d, [&](const Int(&q)[2]) {
+                add_breaks_at(q, d, d, e);
+                return acted_on_at(q, d);
+            });
         }
         if (2 * breaks.size() > max_pieces) return std::nullopt;
     }
@@ -304,8 +336,9 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                     const Int t = p[normal] < box[m].lo[normal]
                                       ? Int(box[m].lo[normal] - p[normal])
                                       : Int(p[normal] - box[m].lo[normal]);
-                    grid.for_each_element_at(
-                        p, [&](std::uint32_t f) { s.record(t, box[f].axis, box[f].absorber, f); });
+                    grid.for_each_element_at(p, [&](std::uint32_t f) {
+                        if ((box[f].acting >> d) & 1u) s.record(t, box[f].axis, box[f].absorber, f);
+                    });
                 }
                 Piece piece;
                 piece.from = u;
@@ -362,18 +395,32 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
 }
 
 template <class Int>
-void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]) {
-    for (unsigned d = 0; d < 4; ++d) {
-        const Shot<Int> back = grid.shoot(target, d ^ 3u);
-        if (back.escape) continue;
-        const Int q[2] = {(d & 1u) ? Int(target[0] + back.t) : Int(target[0] - back.t),
-                          (d & 2u) ? Int(target[1] + back.t) : Int(target[1] - back.t)};
-        grid.for_each_element_at(q, [&](std::uint32_t m) {
-            const Cursor where = at(m, d);
-            if (where.count == 0) return; // an absorber: no ray leaves it
-            pieces_[locate(where, q[where.tangent]) - pieces_.data()].near_target = true;
-        });
+template <class Visit>
+void PieceTable<Int>::walk_back(const UniformGrid<Int, 2>& grid, const Int (&p)[2], unsigned d,
+                                Visit&& visit) {
+    Int q[2] = {p[0], p[1]};
+    while (true) {
+        const Shot<Int> back = grid.shoot_any(q, d ^ 3u);
+        if (back.escape) return;
+        q[0] = (d & 1u) ? Int(q[0] + back.t) : Int(q[0] - back.t);
+        q[1] = (d & 2u) ? Int(q[1] + back.t) : Int(q[1] - back.t);
+        if (visit(q)) return;
     }
+}
+
+template <class Int>
+void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]) {
+    for (unsigned d = 0; d < 4; ++d)
+        walk_back(grid, target, d, [&](const Int(&q)[2]) {
+            bool acted = false;
+            grid.for_each_element_at(q, [&](std::uint32_t m) {
+                if ((acting_[m] >> d) & 1u) acted = true;
+                const Cursor where = at(m, d);
+                if (where.count == 0) return; // an absorber: no ray leaves it
+                pieces_[locate(where, q[where.tangent]) - pieces_.data()].near_target = true;
+            });
+            return acted;
+        });
 }
 
 template <class Int>

@@ -10,6 +10,13 @@
 // with 0 < t <= t_exit(cell) holds the smallest such t over the whole scene,
 // and all elements met at that t (they all contain the hit point, which lies
 // in the cell's closed box).
+//
+// One-sided elements act on half of the directions only (LatticeElement::
+// acting). When the scene has any, each cell keeps one member list for every
+// direction, holding only the elements that act on it, beside the list of
+// all elements (which the piece tables' construction walks): the filter is
+// applied once, when the lists are built, and a shot reads the lists of its
+// own direction with no test per element.
 #pragma once
 
 #include "lattice/lattice_int.hpp"
@@ -67,9 +74,16 @@ public:
     explicit UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element = 2);
 
     // `negative` bit i set: the ray moves towards -infinity on axis i.
-    Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
+    // Only elements that act on that direction are met.
+    Shot<Int> shoot(const Int (&p)[M], unsigned negative) const {
+        return shoot_in(p, negative, list_base_[negative]);
+    }
+    // The same over every element, whichever directions it acts on.
+    Shot<Int> shoot_any(const Int (&p)[M], unsigned negative) const {
+        return shoot_in(p, negative, 0);
+    }
 
-    std::size_t cell_count() const { return offsets_.size() - 1; }
+    std::size_t cell_count() const { return static_cast<std::size_t>(cells_); }
 
     // Calls visit(index) for every element whose closed box contains p (an
     // element may be visited more than once).
@@ -102,7 +116,7 @@ public:
     // small part of the box, where a grid degrades and a hierarchy does not.
     std::size_t fullest_cell() const {
         std::size_t most = 0;
-        for (std::size_t c = 0; c + 1 < offsets_.size(); ++c)
+        for (std::size_t c = 0; c < static_cast<std::size_t>(cells_); ++c)
             most = std::max<std::size_t>(most, offsets_[c + 1] - offsets_[c]);
         return most;
     }
@@ -110,10 +124,17 @@ public:
 private:
     using Item = ElementBox<Int, M>;
     std::vector<Item> items_;
-    Int lo_[M], hi_[M], h_[M];           // bounding box, cell size
-    std::int64_t n_[M]{};                // cells per axis
-    std::vector<std::uint32_t> offsets_; // CSR: cell -> [offsets_[c], offsets_[c+1]) in members_
+    Int lo_[M], hi_[M], h_[M]; // bounding box, cell size
+    std::int64_t n_[M]{};      // cells per axis
+    std::int64_t cells_ = 0;   // cells in the grid
+    // CSR: list slot -> [offsets_[c], offsets_[c+1]) in members_. Slots
+    // 0 .. cells_-1 list every element; with one-sided elements, slots
+    // (1 + d) * cells_ + c list those acting on direction d.
+    std::vector<std::uint32_t> offsets_;
     std::vector<std::uint32_t> members_;
+    std::int64_t list_base_[1u << M]{}; // direction -> its first slot
+
+    Shot<Int> shoot_in(const Int (&p)[M], unsigned negative, std::int64_t base) const;
 
     // Cells i along axis j whose closed box [lo + i h, lo + (i+1) h] meets
     // [a, b]: floor((a - lo - 1) / h) <= i <= floor((b - lo) / h), clamped.
@@ -180,13 +201,26 @@ UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene, std::int64_t cells_p
         n_[j] = to_index(floor_div(points + h_[j] - 1, h_[j]));
         total *= n_[j];
     }
-    offsets_.assign(static_cast<std::size_t>(total) + 1, 0);
-    for (const Item& it : items_) for_each_cell(it, [&](std::int64_t c) { ++offsets_[c + 1]; });
+    cells_ = total;
+    const std::int64_t lists = scene.one_sided ? 1 + (std::int64_t{1} << M) : 1;
+    for (unsigned d = 0; d < (1u << M); ++d) list_base_[d] = scene.one_sided ? (1 + d) * total : 0;
+    // List 0 holds every element, list 1 + d those acting on direction d.
+    auto in_list = [](const Item& it, std::int64_t list) {
+        return list == 0 || it.acts_on(static_cast<unsigned>(list - 1));
+    };
+    offsets_.assign(static_cast<std::size_t>(lists * total) + 1, 0);
+    for (std::int64_t list = 0; list < lists; ++list)
+        for (const Item& it : items_)
+            if (in_list(it, list))
+                for_each_cell(it, [&](std::int64_t c) { ++offsets_[list * total + c + 1]; });
     for (std::size_t c = 1; c < offsets_.size(); ++c) offsets_[c] += offsets_[c - 1];
     members_.resize(offsets_.back());
     std::vector<std::uint32_t> fill(offsets_.begin(), offsets_.end() - 1);
-    for (std::uint32_t e = 0; e < items_.size(); ++e)
-        for_each_cell(items_[e], [&](std::int64_t c) { members_[fill[c]++] = e; });
+    for (std::int64_t list = 0; list < lists; ++list)
+        for (std::uint32_t e = 0; e < items_.size(); ++e)
+            if (in_list(items_[e], list))
+                for_each_cell(items_[e],
+                              [&](std::int64_t c) { members_[fill[list * total + c]++] = e; });
 }
 
 template <class Int, int M>
@@ -218,7 +252,8 @@ void UniformGrid<Int, M>::for_each_neighbour(std::uint32_t e, Visit&& visit) con
 }
 
 template <class Int, int M>
-Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
+Shot<Int> UniformGrid<Int, M>::shoot_in(const Int (&p)[M], unsigned negative,
+                                        std::int64_t base) const {
     Shot<Int> shot;
     if (items_.empty()) return shot;
     // sigma_j = ±1: multiplying by it keeps the loops free of direction branches.
@@ -251,6 +286,7 @@ Shot<Int> UniformGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const
     }
     stride[0] = 1;
     for (int j = 1; j < M; ++j) stride[j] = stride[j - 1] * n_[j - 1];
+    c += base; // the walk stays within one list: strides move between its cells
 
     while (true) {
         Int t_exit = wall_t[0];
