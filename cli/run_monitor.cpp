@@ -83,10 +83,28 @@ std::optional<Limit> SolveMonitor::poll(std::uint64_t reflections) {
     return std::nullopt;
 }
 
+// Resident memory in megabytes (/proc/self/statm: size, then resident
+// pages); display only.
+static double resident_megabytes() {
+    std::uint64_t size = 0, resident = 0;
+    std::ifstream("/proc/self/statm") >> size >> resident;
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1048576.0;
+}
+
 void SolveMonitor::draw(std::uint64_t reflections, Clock::time_point now) {
-    if (!state_bound_) state_bound_ = compute_bounds(scene_, false).refined_states;
     // Display only: floating point never reaches an answer.
     const double seconds = std::chrono::duration<double>(now - begin_).count();
+    if (!scene_.single_trajectory()) { // the illumination search counts branch states
+        char line[128];
+        std::snprintf(line, sizeof line, "%llu branch states, %.3g/s, %.1f s, %.0f MB resident",
+                      static_cast<unsigned long long>(reflections), reflections / seconds, seconds,
+                      resident_megabytes());
+        std::fprintf(stderr, "\r\033[K%s", line);
+        std::fflush(stderr);
+        drawn_ = true;
+        return;
+    }
+    if (!state_bound_) state_bound_ = compute_bounds(scene_, false).refined_states;
     std::string line = std::to_string(reflections) + " reflections";
     char numbers[64];
     std::snprintf(numbers, sizeof numbers, ", %.3g/s, %.1f s", reflections / seconds, seconds);

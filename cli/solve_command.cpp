@@ -169,12 +169,12 @@ Answer stopped_before_solving(Limit limit) {
     return answer;
 }
 
-// Certificates do not cover splitters, one-sided elements or several rays
-// and targets yet (docs/optics.md): refuse before any file is written.
+// Certificates do not cover single trajectories with one-sided elements yet
+// (docs/optics.md): refuse before any file is written.
 void refuse_unsupported_certificate(const Scene& scene, const SolveArgs& args) {
-    if (args.certificate.empty() || (scene.single_trajectory() && !scene.has_one_sided())) return;
-    throw UsageError("--certificate: certificates for scenes with splitters, one-sided elements "
-                     "or several rays or targets are not supported yet");
+    if (args.certificate.empty() || !scene.single_trajectory() || !scene.has_one_sided()) return;
+    throw UsageError("--certificate: certificates for single trajectories with one-sided "
+                     "elements are not supported yet");
 }
 
 int run(const SolveArgs& args, const CLI::Option* max_steps, const CLI::Option* certificate) {
@@ -222,6 +222,10 @@ int run(const SolveArgs& args, const CLI::Option* max_steps, const CLI::Option* 
     options.arithmetic = arithmetics.at(args.arithmetic);
     options.shooter = shooters.at(args.shooter);
     if (max_steps->count() > 0) options.max_steps = args.max_steps;
+    // The illumination search keeps its branch states within the same
+    // budget, so it ends with Limit::memory at a state boundary, lit
+    // targets kept, rather than wherever an allocation fails.
+    if (args.max_memory > 0) options.max_state_bytes = args.max_memory << 20;
     SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph);
     options.monitor = &monitor;
 

@@ -1,6 +1,6 @@
 // `orthoray solve` on the scenes of docs/optics.md: the per-target summary
-// and JSON, `tail` on every cycle, exit statuses, the refused certificate,
-// and `convert` round trips of splitters, sides and several rays.
+// and JSON, `tail` on every cycle, exit statuses, the refused certificate
+// of a one-sided single trajectory, and `convert` round trips of splitters, sides and several rays.
 #include "orthoray/parse.hpp"
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
@@ -84,17 +84,16 @@ TEST_CASE("solve reports tail and period of a rho-shaped cycle", "[cli][optics]"
     CHECK(json_of(pure)["period"] == 10);
 }
 
-TEST_CASE("solve refuses certificates for the new scenes, writing nothing", "[cli][optics]") {
+TEST_CASE("solve refuses certificates for one-sided single trajectories, writing nothing",
+          "[cli][optics]") {
     TempDir dir;
-    for (const std::string& scene : {splitter_scene, rho_scene}) {
-        const std::string file = dir.write("scene.scene", scene);
-        const std::string cert = dir.path("out.cert");
-        const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
-        CHECK(r.status == 2);
-        CHECK(r.out.empty());
-        CHECK(r.err.find("not supported yet") != std::string::npos);
-        CHECK_FALSE(std::filesystem::exists(cert));
-    }
+    const std::string file = dir.write("scene.scene", rho_scene);
+    const std::string cert = dir.path("out.cert");
+    const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("not supported yet") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(cert));
 }
 
 TEST_CASE("the .scene writer round-trips splitters, sides and several rays", "[reader][optics]") {

@@ -28,13 +28,16 @@ public:
     // Sets options.path to this writer and options.induction_observer to its
     // induction section, which records the exchange and steps when the
     // induction engine decides (docs/induction-certificates.md); the points
-    // so far are their prefix.
+    // so far are their prefix. For the illumination question (several rays
+    // or targets, or a splitter) it sets options.illumination_observer to
+    // its illumination section instead (docs/certificates.md).
     void attach(SolveOptions& options);
     void visit(const Vector& point, const Vector& direction) override;
     void finish(const Answer& answer);
 
 private:
     class InductionSection;
+    class IlluminationSection;
     void write_vector(const Vector& x);
 
     std::ostream& out_;
@@ -44,6 +47,7 @@ private:
     Vector first_reflection_point_, first_reflection_direction_;
     Vector last_direction_;
     std::unique_ptr<InductionSection> induction_;
+    std::unique_ptr<IlluminationSection> illumination_;
     bool induced_ = false; // the induction engine has begun recording
 };
 

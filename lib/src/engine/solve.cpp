@@ -68,12 +68,20 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     // reference tracer (the illumination question also by the state graph
     // when asked for): the lattice and induction engines assume two-sided
     // mirrors and one trajectory. The answer's engine says which ran.
-    if (options.path && (!scene.single_trajectory() || scene.has_one_sided()))
-        throw std::invalid_argument("certificates for scenes with splitters, one-sided elements "
-                                    "or several rays or targets are not supported yet");
-    if (!scene.single_trajectory())
-        return options.engine == Engine::graph ? solve_illumination_by_graph(scene, options)
-                                               : engine::solve_illumination(scene, options);
+    if (options.path && scene.single_trajectory() && scene.has_one_sided())
+        throw std::invalid_argument("certificates for single trajectories with one-sided "
+                                    "elements are not supported yet");
+    if (!scene.single_trajectory()) {
+        // Its evidence goes to an IlluminationObserver; a bare PathSink
+        // would silently receive nothing.
+        if (options.path && !options.illumination_observer)
+            throw std::invalid_argument("the illumination question streams its certificate to an "
+                                        "IlluminationObserver, not a PathSink");
+        if (options.engine != Engine::graph) return engine::solve_illumination(scene, options);
+        if (options.illumination_observer)
+            throw std::invalid_argument("the graph engine does not write certificates");
+        return solve_illumination_by_graph(scene, options);
+    }
     if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
     switch (options.engine) {
     case Engine::reference:
