@@ -96,6 +96,30 @@ TEST_CASE("solve refuses certificates for one-sided single trajectories, writing
     CHECK_FALSE(std::filesystem::exists(cert));
 }
 
+TEST_CASE("solve writes illumination certificates in both formats", "[cli][optics]") {
+    TempDir dir;
+    const std::string file = dir.write("split.scene", splitter_scene);
+    const std::string cert = dir.path("out.cert"), jsonl = dir.path("out.jsonl");
+    CHECK(run_cli("solve " + quote(file) + " --certificate " + quote(cert)).status == 1);
+    CHECK(slurp(cert) == "orthoray-certificate 1\ndim 2\nillumination\n"
+                         "branch 0 0 1 0 ray 1 reflections 0\n"
+                         "branch 2 0 1 0 ray 1 reflections 0\n"
+                         "branch 2 0 -1 0 ray 1 reflections 1\n"
+                         "lit 1 reflections 0 ray 1\nstep 0 0 1 0\nstep 2 0 1 0\n"
+                         "lit 2 reflections 1 ray 1\nstep 0 0 1 0\nstep 2 0 -1 0\n"
+                         "unlit 3\nanswer no\nreason unlit\nreflections 1\nstates 3\nend\n");
+    CHECK(run_cli("solve " + quote(file) + " --certificate-format jsonl --certificate " +
+                  quote(jsonl))
+              .status == 1);
+    CHECK(slurp(jsonl).find("{\"unlit\": \"3\"}\n{\"answer\": \"no\", \"reason\": \"unlit\", "
+                            "\"reflections\": \"1\", \"states\": \"3\"}\n{\"end\": true}\n") !=
+          std::string::npos);
+    // The graph engine still writes none.
+    const CliResult graph =
+        run_cli("solve " + quote(file) + " --engine graph --certificate " + quote(cert));
+    CHECK(graph.status == 2);
+}
+
 TEST_CASE("the .scene writer round-trips splitters, sides and several rays", "[reader][optics]") {
     const std::string text = "dim 3\nsplitter z- 0 x 0 4 y 0 4\nmirror x+ 1 y 0 1 z 0 1\n"
                              "absorber y 2 x 0 1 z 0 1\nray 0 0 0 1 1 1\nray 1 2 3 -1 0 0\n"
