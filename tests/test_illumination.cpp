@@ -56,7 +56,7 @@ TEST_CASE("branch-state search agrees with the state graph on splitter-rich scen
     shape.max_rays = 4;
     shape.max_targets = 4;
     shape.scene.max_elements = 8;
-    const int cases = test::case_count(2000);
+    const int cases = test::case_count(1500);
     int compared = 0, lit = 0, unlit = 0, fewer = 0;
     for (int i = 0; i < cases; ++i) {
         shape.scene.dim = i % 2 == 0 ? 3 : 2;

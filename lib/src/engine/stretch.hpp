@@ -43,14 +43,15 @@ template <class Visit>
 StretchEnd walk_stretch(const EventStepper& stepper, Vector p, Vector v, Visit&& visit) {
     BrentDetector<StretchState> detector;
     StretchEnd end;
+    StretchState s{std::move(p), std::move(v)}; // the detector copies it only when it saves it
     for (std::uint64_t i = 1;; ++i) {
         // A state seen before: everything from here on repeats.
-        if (detector.observe(StretchState{p, v}, i)) {
+        if (detector.observe(s, i)) {
             end.kind = StretchEnd::Kind::cycle;
             return end;
         }
-        ReferenceEvent e = stepper.next(p, v);
-        if (!visit(p, v, end.reflections, e)) {
+        ReferenceEvent e = stepper.next(s.p, s.v);
+        if (!visit(s.p, s.v, end.reflections, e)) {
             end.kind = StretchEnd::Kind::stopped;
             return end;
         }
@@ -61,13 +62,13 @@ StretchEnd walk_stretch(const EventStepper& stepper, Vector p, Vector v, Visit&&
         if (e.outgoing.size() >= 2) {
             end.kind = StretchEnd::Kind::split;
             end.point = std::move(e.point);
-            end.incoming = std::move(v);
+            end.incoming = std::move(s.v);
             end.outgoing = std::move(e.outgoing);
             return end;
         }
         if (e.outgoing.front().reflection) ++end.reflections;
-        p = std::move(e.point);
-        v = std::move(e.outgoing.front().direction);
+        s.p = std::move(e.point);
+        s.v = std::move(e.outgoing.front().direction);
     }
 }
 
