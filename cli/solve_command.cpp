@@ -222,10 +222,11 @@ int run(const SolveArgs& args, const CLI::Option* max_steps, const CLI::Option* 
     options.arithmetic = arithmetics.at(args.arithmetic);
     options.shooter = shooters.at(args.shooter);
     if (max_steps->count() > 0) options.max_steps = args.max_steps;
-    // The illumination search keeps its branch states within the same
-    // budget, so it ends with Limit::memory at a state boundary, lit
-    // targets kept, rather than wherever an allocation fails.
-    if (args.max_memory > 0) options.max_state_bytes = args.max_memory << 20;
+    // The illumination search keeps its branch states within three quarters
+    // of the same budget, so it ends with Limit::memory at a state boundary,
+    // lit targets kept, rather than wherever an allocation fails; the last
+    // quarter is for everything else (stepping, the answer, the certificate).
+    if (args.max_memory > 0) options.max_state_bytes = (args.max_memory << 20) / 4 * 3;
     SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph);
     options.monitor = &monitor;
 
