@@ -1,6 +1,7 @@
 // `orthoray solve` on the scenes of docs/optics.md: the per-target summary
 // and JSON, `tail` on every cycle, exit statuses, the refused certificate
 // of a one-sided single trajectory, and `convert` round trips of splitters, sides and several rays.
+#include "orthoray/generate.hpp"
 #include "orthoray/parse.hpp"
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
@@ -118,6 +119,31 @@ TEST_CASE("solve writes illumination certificates in both formats", "[cli][optic
     const CliResult graph =
         run_cli("solve " + quote(file) + " --engine graph --certificate " + quote(cert));
     CHECK(graph.status == 2);
+}
+
+TEST_CASE("solve --max-memory stops the illumination search with no wrong answer",
+          "[cli][optics]") {
+    // 60 random mirrors in a closed box, every third one a splitter, and a
+    // second target: about 3 * 10^4 branch states, some 3 MB.
+    orthoray::RandomFamily family;
+    family.mirrors = 60;
+    family.box = true;
+    family.seed = 3;
+    orthoray::Scene s = orthoray::generate_random(family).scene;
+    for (std::size_t i = 2; i < s.elements.size(); i += 3)
+        s.elements[i].kind = orthoray::ElementKind::splitter;
+    s.targets.push_back(orthoray::Vector{orthoray::Rational(1, 3), orthoray::Rational(1, 7), 0});
+    TempDir dir;
+    const std::string file = dir.write("maze.scene", orthoray::write_scene(s));
+    const CliResult r = run_cli("solve --json --max-memory 1 " + quote(file));
+    CHECK(r.status == 3);
+    const nlohmann::json j = json_of(r);
+    CHECK(j["reason"] == "limit");
+    CHECK(j["limit"] == "memory");
+    // The search itself stopped (its states are reported), not the process.
+    REQUIRE(j["targets"].size() == 2);
+    CHECK(j["states"] > 1000);
+    for (const nlohmann::json& t : j["targets"]) CHECK(t["answer"] != "no");
 }
 
 TEST_CASE("the .scene writer round-trips splitters, sides and several rays", "[reader][optics]") {
