@@ -83,22 +83,37 @@ std::optional<Limit> SolveMonitor::poll(std::uint64_t reflections) {
     return std::nullopt;
 }
 
-void SolveMonitor::draw(std::uint64_t reflections, Clock::time_point now) {
-    if (!state_bound_) state_bound_ = compute_bounds(scene_, false).refined_states;
+// Resident memory in megabytes (/proc/self/statm: size, then resident
+// pages); display only.
+static double resident_megabytes() {
+    std::uint64_t size = 0, resident = 0;
+    std::ifstream("/proc/self/statm") >> size >> resident;
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1048576.0;
+}
+
+void SolveMonitor::draw(std::uint64_t count, Clock::time_point now) {
     // Display only: floating point never reaches an answer.
     const double seconds = std::chrono::duration<double>(now - begin_).count();
-    std::string line = std::to_string(reflections) + " " + unit_;
+    std::string line = std::to_string(count) + " " + unit_;
     char numbers[64];
-    std::snprintf(numbers, sizeof numbers, ", %.3g/s, %.1f s", reflections / seconds, seconds);
+    std::snprintf(numbers, sizeof numbers, ", %.3g/s, %.1f s", count / seconds, seconds);
     line += numbers;
-    if (*state_bound_ > 0) {
-        const std::string bound = state_bound_->get_str();
-        std::snprintf(
-            numbers, sizeof numbers, ", %.3g of the ",
-            mpq_class(Integer(static_cast<unsigned long>(reflections)), *state_bound_).get_d());
+    if (!scene_.single_trajectory()) {
+        // What a long illumination search runs out of is memory: its
+        // branch states stay stored (docs/optics.md).
+        std::snprintf(numbers, sizeof numbers, ", %.0f MB resident", resident_megabytes());
         line += numbers;
-        line += bound.size() <= 12 ? bound : "10^" + std::to_string(bound.size() - 1) + "+";
-        line += " states bound";
+    } else {
+        if (!state_bound_) state_bound_ = compute_bounds(scene_, false).refined_states;
+        if (*state_bound_ > 0) {
+            const std::string bound = state_bound_->get_str();
+            std::snprintf(
+                numbers, sizeof numbers, ", %.3g of the ",
+                mpq_class(Integer(static_cast<unsigned long>(count)), *state_bound_).get_d());
+            line += numbers;
+            line += bound.size() <= 12 ? bound : "10^" + std::to_string(bound.size() - 1) + "+";
+            line += " states bound";
+        }
     }
     std::fprintf(stderr, "\r\033[K%s", line.c_str());
     std::fflush(stderr);

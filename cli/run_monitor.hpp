@@ -41,6 +41,8 @@ public:
     SolveMonitor(const SolveMonitor&) = delete;
     SolveMonitor& operator=(const SolveMonitor&) = delete;
 
+    // `reflections`: for the illumination question, the branch states
+    // expanded so far; the line then says so and shows resident memory.
     std::optional<Limit> poll(std::uint64_t reflections) override;
     // Erases the progress line, if one was drawn, before the answer is printed.
     void erase_progress();

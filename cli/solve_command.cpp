@@ -84,14 +84,6 @@ Answer stopped_before_solving(Limit limit) {
     return answer;
 }
 
-// Certificates do not cover splitters or several rays and targets yet
-// (docs/optics.md): refuse before any file is written.
-void refuse_unsupported_certificate(const Scene& scene, const SolveArgs& args) {
-    if (args.certificate.empty() || scene.single_trajectory()) return;
-    throw UsageError("--certificate: certificates for scenes with splitters or several rays or "
-                     "targets are not supported yet");
-}
-
 int run(const SolveArgs& args, const CLI::Option* certificate) {
     const auto begin_command = std::chrono::steady_clock::now();
     if (certificate->count() > 0 && args.choices.engine == "graph")
@@ -129,9 +121,15 @@ int run(const SolveArgs& args, const CLI::Option* certificate) {
                                                  : Limit::time),
                       0);
     }
-    refuse_unsupported_certificate(scene, args);
     SolveOptions options = args.choices.options();
-    SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph);
+    // The illumination search keeps its branch states within three quarters
+    // of the same budget, so it ends with Limit::memory at a state boundary,
+    // lit targets kept, rather than wherever an allocation fails; the last
+    // quarter is for everything else (stepping, the answer, the certificate).
+    if (args.choices.max_memory > 0)
+        options.max_state_bytes = (args.choices.max_memory << 20) / 4 * 3;
+    SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph,
+                         scene.single_trajectory() ? "reflections" : "branch states");
     options.monitor = &monitor;
 
     std::optional<OutputFile> cert_file;

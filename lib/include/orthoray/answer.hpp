@@ -54,7 +54,9 @@ struct Answer {
     // period is reflections - tail.
     Integer tail;
     // The illumination question: one entry per target, in file order, and
-    // the number of distinct states explored. Empty for a single trajectory.
+    // the number of branch states stored (rays' starts and states leaving an
+    // event with two or more outgoing directions, docs/optics.md; the graph
+    // engine counts every state instead). Empty for a single trajectory.
     std::vector<TargetAnswer> targets;
     Integer states;
     Limit limit = Limit::steps; // which limit, when reason is Reason::limit
@@ -79,6 +81,13 @@ struct Answer {
             std::uint64_t rounds = 0; // of which accelerated
             double seconds = 0;       // building the exchange and inducing
         } induction;
+
+        // What the illumination search held and did (docs/optics.md).
+        struct Illumination {
+            std::uint64_t expanded = 0;  // branch states whose stretch was walked
+            std::uint64_t events = 0;    // events stepped over along those stretches
+            std::size_t state_bytes = 0; // bytes held for the states: set, labels, queue
+        } illumination;
     } stats;
 
     bool yes() const { return reason == Reason::hit || reason == Reason::lit; }

@@ -30,7 +30,9 @@ public:
     // Sets options.path to this writer and options.induction_observer to its
     // induction section, which records the exchange and steps when the
     // induction engine decides (docs/induction-certificates.md); the points
-    // so far are their prefix.
+    // so far are their prefix. For the illumination question (several rays
+    // or targets, or a splitter) it sets options.illumination_observer to
+    // its illumination section instead (docs/certificates.md).
     void attach(SolveOptions& options);
     void visit(const Vector& point, const Vector& direction) override;
     // The start of a cycle entered after a tail: the verdict's `state`.
@@ -39,6 +41,7 @@ public:
 
 private:
     class InductionSection;
+    class IlluminationSection;
     void write_vector(const Vector& x);
 
     std::ostream& out_;
@@ -51,6 +54,7 @@ private:
     std::optional<std::pair<Vector, Vector>> cycle_start_;
     Vector last_direction_;
     std::unique_ptr<InductionSection> induction_;
+    std::unique_ptr<IlluminationSection> illumination_;
     bool induced_ = false; // the induction engine has begun recording
 };
 

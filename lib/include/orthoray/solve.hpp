@@ -4,6 +4,7 @@
 #include "orthoray/answer.hpp"
 #include "orthoray/scene.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -62,6 +63,29 @@ public:
 
 class InductionObserver; // orthoray/exchange.hpp
 
+// Sees the evidence behind an illumination answer (docs/optics.md,
+// docs/certificates.md): after the search, the engine reports every branch
+// state it stored with its label, then each target in order: lit (followed
+// by the steps of one branch lighting it), unlit, or unknown (at a limit).
+// Rays and targets are numbered from 1. Used to write certificates.
+class IlluminationObserver {
+public:
+    virtual ~IlluminationObserver() = default;
+    // A branch state (a ray's start, or a state leaving an event with two or
+    // more outgoing directions) and its label: the least reflections of a
+    // branch reaching it, then the least ray achieving that. At a limit the
+    // labels of states not yet expanded are upper bounds only.
+    virtual void branch(const Vector& point, const Vector& direction, std::size_t ray,
+                        std::uint64_t reflections) = 0;
+    // Target `target` is lit after `reflections` by ray `ray`; step() then
+    // gives the ray's start and direction, then every event point of the
+    // branch with the direction it leaves in, up to the segment through it.
+    virtual void lit(std::size_t target, std::uint64_t reflections, std::size_t ray) = 0;
+    virtual void step(const Vector& point, const Vector& direction) = 0;
+    virtual void unlit(std::size_t target) = 0;
+    virtual void unknown(std::size_t target) = 0;
+};
+
 // A PathSink that keeps everything it is given. Its memory grows with the
 // path, so it suits short runs and tests; certificates stream instead.
 class PathRecorder : public PathSink {
@@ -94,6 +118,10 @@ struct SolveOptions {
     std::int64_t grid_density = 0;
     // Stop with Reason::limit rather than perform more than this many reflections.
     std::optional<std::uint64_t> max_steps;
+    // The illumination question: stop with Limit::memory rather than let the
+    // stored branch states (their set, labels and queue) take more bytes.
+    // Lit targets whose count is already final are kept; the rest are unknown.
+    std::optional<std::size_t> max_state_bytes;
     // Engine::graph refuses (Reason::limit) scenes with more lattice states.
     std::uint64_t max_graph_states = 2'000'000;
     PathSink* path = nullptr;
@@ -103,6 +131,10 @@ struct SolveOptions {
     // then the prefix up to the first reflection. A CertificateWriter
     // attaches itself as both (CertificateWriter::attach).
     InductionObserver* induction_observer = nullptr;
+    // Sees the branch states, labels and witnesses of an illumination answer
+    // (then every reachable branch state is explored, even when all targets
+    // are lit early). A CertificateWriter attaches itself.
+    IlluminationObserver* illumination_observer = nullptr;
 };
 
 // Running out of memory while solving is a limit too (Reason::limit,

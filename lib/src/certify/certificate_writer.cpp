@@ -5,6 +5,7 @@
 // and an end line; numbers are strings, so nothing is rounded.
 #include "orthoray/certificate.hpp"
 
+#include "certify/illumination_certificate_section.hpp"
 #include "orthoray/exchange.hpp"
 
 #include <initializer_list>
@@ -109,6 +110,11 @@ void CertificateWriter::write_vector(const Vector& x) {
 CertificateWriter::~CertificateWriter() = default;
 
 void CertificateWriter::attach(SolveOptions& options) {
+    if (!scene_.single_trajectory()) {
+        if (!illumination_) illumination_ = std::make_unique<IlluminationSection>(*this);
+        options.illumination_observer = illumination_.get();
+        return;
+    }
     if (!induction_) induction_ = std::make_unique<InductionSection>(*this);
     options.path = this;
     options.induction_observer = induction_.get();
@@ -131,6 +137,11 @@ void CertificateWriter::cycle_start(const Vector& point, const Vector& direction
 }
 
 void CertificateWriter::finish(const Answer& answer) {
+    if (!scene_.single_trajectory()) {
+        if (!illumination_) illumination_ = std::make_unique<IlluminationSection>(*this);
+        illumination_->finish(answer);
+        return;
+    }
     const bool json = format_ == CertificateFormat::jsonl;
     // A statement: `name operands` on its own line, or `"name": operands`
     // inside the one verdict object.
@@ -203,7 +214,7 @@ void CertificateWriter::finish(const Answer& answer) {
         break;
     case Reason::absorbed:
         break;
-    case Reason::lit: // solve() refuses to write certificates for illumination
+    case Reason::lit: // the illumination section wrote these above
     case Reason::unlit:
         break;
     }

@@ -1,115 +1,289 @@
+// Dijkstra over branch states (docs/optics.md, "Illumination").
+//
+// A label is a pair (reflections, ray) compared lexicographically. The
+// label of a branch state is the least label of a branch reaching it; a ray's
+// start begins at (0, ray). Expanding a branch state with label (K, R) walks
+// its stretch: a target first passed w reflections into it gets the
+// candidate (K + w, R), and where the stretch ends at an event with several
+// outgoing directions, each (event point, direction) is reached with
+// (K + w + [the direction changed], R). Edge weights are never negative and
+// keep the ray, so the order is preserved and labels settle in increasing
+// order: a target's best candidate is final once it is <= the least label
+// still waiting, as nothing expanded later can offer less.
 #include "engine/illumination.hpp"
 
-#include "engine/reference_step.hpp"
+#include "engine/branch_state_set.hpp"
+#include "engine/stretch.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <functional>
-#include <map>
+#include <limits>
 #include <new>
-#include <queue>
 #include <tuple>
-#include <vector>
 
 namespace orthoray::engine {
 namespace {
 
-// A state: a point and the direction the ray leaves it in. Ordered
-// lexicographically on exact rationals for the visited map.
-struct State {
-    Vector p, v;
-    bool operator<(const State& other) const { return std::tie(p, v) < std::tie(other.p, other.v); }
+struct Label {
+    std::uint64_t reflections = 0;
+    std::uint32_t ray = 0; // from 1
+    auto operator<=>(const Label&) const = default;
 };
 
-// Dijkstra's label of a state: reflections on the way there, then the ray
-// it came from. Extending a path adds to the count and keeps the ray, which
-// preserves this order, so the first label a state is settled with is the
-// least (reflections, ray) pair over every branch reaching it.
-struct Label {
+// What is kept per branch state besides its key: 16 bytes.
+struct Record {
     std::uint64_t reflections;
-    std::size_t ray; // from 1
-    std::size_t state;
-    bool operator>(const Label& other) const {
-        return std::tie(reflections, ray, state) >
-               std::tie(other.reflections, other.ray, other.state);
+    std::uint32_t ray : 31;
+    std::uint32_t settled : 1;
+    std::uint32_t parent; // the branch state whose expansion gave the label
+};
+constexpr std::uint32_t no_parent = std::numeric_limits<std::uint32_t>::max();
+
+// A queue entry; one left behind by a better label later is skipped.
+struct Waiting {
+    Label label;
+    std::uint32_t state;
+    bool operator>(const Waiting& other) const {
+        return std::tie(label, state) > std::tie(other.label, other.state);
     }
+};
+
+// A target's least candidate so far: the branch state whose stretch passes
+// it, w reflections in.
+struct Candidate {
+    bool found = false;
+    Label label;
+    std::uint32_t branch = 0;
+};
+
+class IlluminationSearch {
+public:
+    IlluminationSearch(const Scene& scene, const SolveOptions& options)
+        : scene_(scene), options_(options), stepper_(scene), budget_(options.max_state_bytes),
+          states_(scene, budget_), best_(scene.targets.size()) {}
+
+    Answer run() {
+        try {
+            search();
+        } catch (const std::bad_alloc&) {
+            limit_ = Limit::memory;
+        }
+        Answer answer = conclude();
+        if (options_.illumination_observer) report(answer, *options_.illumination_observer);
+        return answer;
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    void search() {
+        for (std::size_t r = 0; r < scene_.rays.size(); ++r)
+            if (!reach(scene_.rays[r].start, scene_.rays[r].direction,
+                       {0, static_cast<std::uint32_t>(r + 1)}, no_parent)) {
+                limit_ = Limit::memory;
+                return;
+            }
+        for (;;) {
+            const std::optional<Waiting> next = pop();
+            if (!next) return; // every reachable branch state is expanded
+            // Without a certificate to write, stop once every target is lit
+            // with a final count.
+            if (!options_.illumination_observer && all_final(next->label)) return;
+            pending_ = next->label;
+            if (options_.max_steps && expanded_ == *options_.max_steps) {
+                limit_ = Limit::steps;
+                return;
+            }
+            if (!poll()) return;
+            records_[next->state].settled = 1;
+            ++expanded_;
+            if (!expand(next->state, next->label)) return;
+            pending_.reset();
+        }
+    }
+
+    // The least waiting entry whose state is not settled and still carries
+    // that label; nullopt when none is left.
+    std::optional<Waiting> pop() {
+        while (!queue_.empty()) {
+            std::pop_heap(queue_.begin(), queue_.end(), std::greater<>{});
+            const Waiting w = queue_.back();
+            queue_.pop_back();
+            const Record& r = records_[w.state];
+            if (!r.settled && Label{r.reflections, r.ray} == w.label) return w;
+        }
+        return std::nullopt;
+    }
+
+    bool all_final(const Label& least_waiting) const {
+        for (const Candidate& c : best_)
+            if (!c.found || least_waiting < c.label) return false;
+        return true;
+    }
+
+    // Polls the monitor about every 10 ms; false (limit_ set) to stop.
+    bool poll() {
+        if (!options_.monitor) return true;
+        const Clock::time_point now = Clock::now();
+        if (now < next_poll_) return true;
+        next_poll_ = now + std::chrono::milliseconds(10);
+        limit_ = options_.monitor->poll(expanded_);
+        return !limit_;
+    }
+
+    // Reaches (p, v) with `label` from `parent`; false when the budget
+    // refuses room for it.
+    bool reach(const Vector& p, const Vector& v, Label label, std::uint32_t parent) {
+        if (!budget_.make_room(records_) || !budget_.make_room(queue_)) return false;
+        const std::optional<BranchStateSet::Inserted> at = states_.insert(p, v);
+        if (!at) return false;
+        if (at->added) {
+            records_.push_back({label.reflections, label.ray, 0, parent});
+        } else {
+            Record& r = records_[at->index];
+            if (r.settled || !(label < Label{r.reflections, r.ray})) return true;
+            r.reflections = label.reflections;
+            r.ray = label.ray;
+            r.parent = parent;
+        }
+        queue_.push_back({label, at->index});
+        std::push_heap(queue_.begin(), queue_.end(), std::greater<>{});
+        return true;
+    }
+
+    // Walks the stretch of branch state `b`; false (limit_ set) when a limit
+    // cut it short.
+    bool expand(std::uint32_t b, Label label) {
+        Vector p, v;
+        states_.state(b, p, v);
+        const StretchEnd end = walk_stretch(
+            stepper_, p, v,
+            [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
+                ++events_;
+                const Label here{label.reflections + w, label.ray};
+                for (std::size_t t = 0; t < best_.size(); ++t) {
+                    Candidate& c = best_[t];
+                    if (c.found && !(here < c.label)) continue;
+                    if (stepper_.passes(scene_.targets[t], q, u, e)) c = {true, here, b};
+                }
+                return poll();
+            });
+        if (end.kind == StretchEnd::Kind::stopped) return false;
+        if (end.kind != StretchEnd::Kind::split) return true;
+        for (const Outgoing& out : end.outgoing) {
+            const Label child{label.reflections + end.reflections + (out.reflection ? 1 : 0),
+                              label.ray};
+            if (!reach(end.point, out.direction, child, b)) {
+                limit_ = Limit::memory;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    Answer conclude() {
+        Answer answer;
+        answer.engine = EngineUsed::reference;
+        answer.arithmetic = ArithmeticUsed::rational;
+        answer.targets.assign(scene_.targets.size(), TargetAnswer{});
+        // At a limit a candidate is final only when no waiting branch state
+        // (nor the one cut short) has a smaller label.
+        std::optional<Label> least = pending_;
+        if (limit_)
+            for (const Waiting& w : queue_) {
+                const Record& r = records_[w.state];
+                if (!r.settled && Label{r.reflections, r.ray} == w.label &&
+                    (!least || w.label < *least))
+                    least = w.label;
+            }
+        bool all = true;
+        for (std::size_t t = 0; t < best_.size(); ++t) {
+            const Candidate& c = best_[t];
+            TargetAnswer& target = answer.targets[t];
+            if (c.found && (!limit_ || !least || !(*least < c.label))) {
+                target.status = TargetAnswer::Status::lit;
+                target.reflections = Integer(static_cast<unsigned long>(c.label.reflections));
+                target.ray = c.label.ray;
+                if (target.reflections > answer.reflections)
+                    answer.reflections = target.reflections;
+            } else {
+                target.status =
+                    limit_ ? TargetAnswer::Status::unknown : TargetAnswer::Status::unlit;
+                all = false;
+            }
+        }
+        answer.reason = limit_ ? Reason::limit : all ? Reason::lit : Reason::unlit;
+        if (limit_) answer.limit = *limit_;
+        answer.states = Integer(static_cast<unsigned long>(states_.size()));
+        answer.stats.illumination = {expanded_, events_, budget_.used()};
+        return answer;
+    }
+
+    // The evidence, for a certificate: every branch state with its label,
+    // then each target's verdict, with a witness when it is lit.
+    void report(const Answer& answer, IlluminationObserver& observer) const {
+        Vector p, v;
+        for (std::uint32_t s = 0; s < states_.size(); ++s) {
+            states_.state(s, p, v);
+            observer.branch(p, v, records_[s].ray, records_[s].reflections);
+        }
+        for (std::size_t t = 0; t < answer.targets.size(); ++t) {
+            switch (answer.targets[t].status) {
+            case TargetAnswer::Status::lit:
+                observer.lit(t + 1, best_[t].label.reflections, best_[t].label.ray);
+                witness(t, observer);
+                break;
+            case TargetAnswer::Status::unlit:
+                observer.unlit(t + 1);
+                break;
+            case TargetAnswer::Status::unknown:
+                observer.unknown(t + 1);
+                break;
+            }
+        }
+    }
+
+    // The branch lighting target t, step by step: follow the parents from
+    // its branch state back to a ray's start, then walk the stretches again
+    // forward, each up to the split that gave the next one's state (whose
+    // first step is that split's point and direction), the last up to the
+    // first segment passing the target.
+    void witness(std::size_t t, IlluminationObserver& observer) const {
+        std::vector<std::uint32_t> chain;
+        for (std::uint32_t s = best_[t].branch; s != no_parent; s = records_[s].parent)
+            chain.push_back(s);
+        Vector p, v;
+        for (std::size_t i = chain.size(); i-- > 0;) {
+            states_.state(chain[i], p, v);
+            walk_stretch(
+                stepper_, p, v,
+                [&](const Vector& q, const Vector& u, std::uint64_t, const ReferenceEvent& e) {
+                    observer.step(q, u);
+                    return i > 0 || !stepper_.passes(scene_.targets[t], q, u, e);
+                });
+        }
+    }
+
+    const Scene& scene_;
+    const SolveOptions& options_;
+    ReferenceStepper stepper_;
+    ByteBudget budget_;
+    BranchStateSet states_;
+    std::vector<Record> records_;
+    std::vector<Waiting> queue_; // a binary heap, least label on top
+    std::vector<Candidate> best_;
+    std::optional<Limit> limit_;
+    // The label of the branch state being expanded: the least still open.
+    std::optional<Label> pending_;
+    std::uint64_t expanded_ = 0, events_ = 0;
+    Clock::time_point next_poll_ = Clock::now();
 };
 
 } // namespace
 
 Answer solve_illumination(const Scene& scene, const SolveOptions& options) {
-    Answer answer;
-    answer.engine = EngineUsed::reference;
-    answer.arithmetic = ArithmeticUsed::rational;
-    answer.targets.assign(scene.targets.size(), TargetAnswer{});
-
-    std::map<State, std::size_t> id;
-    std::vector<State> states;
-    std::vector<bool> settled;
-    std::priority_queue<Label, std::vector<Label>, std::greater<>> queue;
-    auto reach = [&](const State& s, std::uint64_t reflections, std::size_t ray) {
-        auto [it, added] = id.emplace(s, states.size());
-        if (added) {
-            states.push_back(s);
-            settled.push_back(false);
-        }
-        if (!settled[it->second]) queue.push(Label{reflections, ray, it->second});
-    };
-
-    using Clock = std::chrono::steady_clock;
-    auto next_poll = Clock::now();
-    std::uint64_t expanded = 0;
-    std::size_t unlit = scene.targets.size();
-    auto stop = [&](Limit limit) {
-        answer.reason = Reason::limit;
-        answer.limit = limit;
-        answer.states = Integer(static_cast<unsigned long>(states.size()));
-        return answer;
-    };
-    try {
-        for (std::size_t r = 0; r < scene.rays.size(); ++r)
-            reach({scene.rays[r].start, scene.rays[r].direction}, 0, r + 1);
-        while (!queue.empty() && unlit > 0) {
-            const Label label = queue.top();
-            queue.pop();
-            if (settled[label.state]) continue;
-            settled[label.state] = true;
-            if (options.max_steps && expanded == *options.max_steps) return stop(Limit::steps);
-            if (options.monitor && Clock::now() >= next_poll) {
-                if (const std::optional<Limit> limit = options.monitor->poll(expanded))
-                    return stop(*limit);
-                next_poll = Clock::now() + std::chrono::milliseconds(10);
-            }
-            ++expanded;
-            const State s = states[label.state];
-            const ReferenceEvent e = reference_step(scene, s.p, s.v);
-            for (std::size_t t = 0; t < scene.targets.size(); ++t) {
-                TargetAnswer& target = answer.targets[t];
-                if (target.status == TargetAnswer::Status::lit) continue;
-                if (!reference_passes(scene, scene.targets[t], s.p, s.v, e)) continue;
-                target.status = TargetAnswer::Status::lit;
-                target.reflections = Integer(static_cast<unsigned long>(label.reflections));
-                target.ray = label.ray;
-                // Targets are lit in order of reflections: the last one lit
-                // needed the most, and the answer's count is that one's.
-                answer.reflections = target.reflections;
-                --unlit;
-            }
-            for (const Outgoing& out : e.outgoing)
-                reach({e.point, out.direction}, label.reflections + (out.reflection ? 1 : 0),
-                      label.ray);
-        }
-    } catch (const std::bad_alloc&) {
-        return stop(Limit::memory);
-    }
-    // Every reachable state was expanded (or every target is lit): the
-    // targets not lit are proven unlit.
-    for (TargetAnswer& target : answer.targets)
-        if (target.status == TargetAnswer::Status::unknown)
-            target.status = TargetAnswer::Status::unlit;
-    answer.reason = unlit == 0 ? Reason::lit : Reason::unlit;
-    answer.states = Integer(static_cast<unsigned long>(states.size()));
-    return answer;
+    return IlluminationSearch(scene, options).run();
 }
 
 } // namespace orthoray::engine

@@ -1,6 +1,6 @@
 // The illumination question (docs/optics.md): several rays, several targets,
-// splitters. Every branch of every ray is explored in exact rationals with
-// the reference first-event scan.
+// splitters. Dijkstra's algorithm over branch states only; the deterministic
+// stretch between them is walked again when needed, never stored.
 #pragma once
 
 #include "orthoray/solve.hpp"
@@ -8,11 +8,15 @@
 namespace orthoray::engine {
 
 // Which targets some branch passes through, with the least reflections
-// before it first does and the least-numbered ray achieving that. States
-// (event point, outgoing direction) are kept in a visited set, so memory
-// grows with the number of distinct states explored (not bounded yet).
-// options.max_steps caps the states explored; a cap or a monitor's limit
-// gives Reason::limit with the targets lit so far and the rest unknown.
+// before it first does and the least-numbered ray achieving that.
+// Memory grows with the number of branch states (rays' starts and states
+// leaving an event with two or more outgoing directions), not with the
+// length of the stretches between them. options.max_steps caps the branch
+// states expanded, options.max_state_bytes the bytes held for them; a cap
+// or a monitor's limit gives Reason::limit, the lit targets whose count is
+// already final, and the rest unknown. options.illumination_observer, when
+// set, is given every branch state, label and witness at the end (and the
+// search then explores every reachable branch state).
 Answer solve_illumination(const Scene& scene, const SolveOptions& options);
 
 } // namespace orthoray::engine

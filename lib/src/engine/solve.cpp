@@ -75,12 +75,17 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     // elements the lattice engine filters them by side and finds the tail
     // (docs/optics.md), and induction, which needs a bijection, is not used
     // (the answer's engine says lattice).
-    if (options.path && !scene.single_trajectory())
-        throw std::invalid_argument("certificates for scenes with splitters or several rays or "
-                                    "targets are not supported yet");
-    if (!scene.single_trajectory())
-        return options.engine == Engine::graph ? solve_illumination_by_graph(scene, options)
-                                               : engine::solve_illumination(scene, options);
+    if (!scene.single_trajectory()) {
+        // Its evidence goes to an IlluminationObserver; a bare PathSink
+        // would silently receive nothing.
+        if (options.path && !options.illumination_observer)
+            throw std::invalid_argument("the illumination question streams its certificate to an "
+                                        "IlluminationObserver, not a PathSink");
+        if (options.engine != Engine::graph) return engine::solve_illumination(scene, options);
+        if (options.illumination_observer)
+            throw std::invalid_argument("the graph engine does not write certificates");
+        return solve_illumination_by_graph(scene, options);
+    }
     switch (options.engine) {
     case Engine::reference:
         return engine::solve_by_reference(scene, options);

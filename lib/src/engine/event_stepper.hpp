@@ -1,0 +1,38 @@
+// How the illumination search finds the next event of a state. The search
+// sees the scene only through this small interface, so a faster stepper
+// (the lattice engine's, once it knows one-sided elements) can replace the
+// rational scan without touching the search or its certificates.
+#pragma once
+
+#include "engine/reference_step.hpp"
+
+namespace orthoray::engine {
+
+class EventStepper {
+public:
+    virtual ~EventStepper() = default;
+    // The first acting event from p along v, with every outgoing direction.
+    virtual ReferenceEvent next(const Vector& p, const Vector& v) const = 0;
+    // Whether x lies on the segment from p to that event (to infinity on an
+    // escape, up to and including the point of an absorption).
+    virtual bool passes(const Vector& x, const Vector& p, const Vector& v,
+                        const ReferenceEvent& event) const = 0;
+};
+
+// The reference scan: exact rationals, every element looked at per event.
+class ReferenceStepper final : public EventStepper {
+public:
+    explicit ReferenceStepper(const Scene& scene) : scene_(scene) {}
+    ReferenceEvent next(const Vector& p, const Vector& v) const override {
+        return reference_step(scene_, p, v);
+    }
+    bool passes(const Vector& x, const Vector& p, const Vector& v,
+                const ReferenceEvent& event) const override {
+        return reference_passes(scene_, x, p, v, event);
+    }
+
+private:
+    const Scene& scene_;
+};
+
+} // namespace orthoray::engine

@@ -1,0 +1,208 @@
+// The space-bounded illumination search (docs/optics.md): against the
+// explicit state graph on thousands of seeded random scenes, at limits
+// (steps and a byte budget: lit targets exact, the rest unknown, never a
+// wrong unlit), with and without a certificate's full exploration, and the
+// memory of a long one-sided stretch, which must not grow with its length.
+#include "engine/branch_state_set.hpp"
+#include "engine/illumination.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/solve.hpp"
+#include "orthoray/state_graph.hpp"
+#include "support/case_count.hpp"
+#include "support/portable_random.hpp"
+#include "support/random_optics.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace orthoray;
+
+namespace {
+
+using Status = TargetAnswer::Status;
+
+// An observer that only counts, so the search explores everything as it
+// does for a certificate.
+struct CountingObserver : IlluminationObserver {
+    std::size_t branches = 0, steps = 0;
+    void branch(const Vector&, const Vector&, std::size_t, std::uint64_t) override { ++branches; }
+    void lit(std::size_t, std::uint64_t, std::size_t) override {}
+    void step(const Vector&, const Vector&) override { ++steps; }
+    void unlit(std::size_t) override {}
+    void unknown(std::size_t) override {}
+};
+
+// Every target of `partial` is either unknown or exactly as in `full`, and
+// none is unlit: a limit never claims more than it proved.
+void check_partial(const Answer& partial, const Answer& full) {
+    REQUIRE(partial.targets.size() == full.targets.size());
+    for (std::size_t t = 0; t < full.targets.size(); ++t) {
+        const TargetAnswer& p = partial.targets[t];
+        CHECK(p.status != Status::unlit);
+        if (p.status != Status::lit) continue;
+        CHECK(full.targets[t].status == Status::lit);
+        CHECK(p.reflections == full.targets[t].reflections);
+        CHECK(p.ray == full.targets[t].ray);
+    }
+}
+
+} // namespace
+
+TEST_CASE("branch-state search agrees with the state graph on splitter-rich scenes",
+          "[illumination][property]") {
+    std::mt19937_64 rng(1215);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 50;
+    shape.one_sided_percent = 30;
+    shape.max_rays = 4;
+    shape.max_targets = 4;
+    shape.scene.max_elements = 8;
+    const int cases = test::case_count(1500);
+    int compared = 0, lit = 0, unlit = 0, fewer = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 2 == 0 ? 3 : 2;
+        shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
+        const Scene s = test::random_optics_scene(rng, shape);
+        if (s.single_trajectory()) continue;
+        const std::optional<Answer> graph = explore_illumination_graph(s, 20000);
+        if (!graph) continue;
+        ++compared;
+        INFO("case " << i << "\n" << write_scene(s));
+        // Stopping early, and exploring everything as for a certificate.
+        SolveOptions full;
+        CountingObserver observer;
+        full.illumination_observer = &observer;
+        const Answer a = solve(s, full);
+        CHECK(observer.branches == a.states.get_ui());
+        for (const Answer& b : {solve(s), a}) {
+            CHECK(b.reason == graph->reason);
+            CHECK(b.reflections == graph->reflections);
+            REQUIRE(b.targets.size() == graph->targets.size());
+            for (std::size_t t = 0; t < b.targets.size(); ++t) {
+                CHECK(b.targets[t].status == graph->targets[t].status);
+                CHECK(b.targets[t].reflections == graph->targets[t].reflections);
+                CHECK(b.targets[t].ray == graph->targets[t].ray);
+            }
+            // Branch states are some of the states.
+            CHECK(b.states <= graph->states);
+        }
+        fewer += a.states < graph->states;
+        for (const TargetAnswer& t : a.targets) (t.status == Status::lit ? lit : unlit) += 1;
+        // A random cap on the branch states expanded: a limit or the answer.
+        SolveOptions capped;
+        capped.max_steps = static_cast<std::uint64_t>(uniform(rng, 0, 6));
+        const Answer c = solve(s, capped);
+        if (c.reason == Reason::limit)
+            check_partial(c, *graph);
+        else
+            CHECK(c.reason == graph->reason);
+    }
+    CHECK(compared > cases / 2);
+    CHECK(lit > 0);
+    CHECK(unlit > 0);
+    CHECK(fewer > compared / 4); // stretches are really left out
+}
+
+TEST_CASE("a byte budget ends the search with Limit::memory and no wrong answer",
+          "[illumination]") {
+    std::mt19937_64 rng(1216);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 70;
+    shape.one_sided_percent = 10;
+    shape.scene.max_elements = 10;
+    shape.scene.box_percent = 80;
+    int limited = 0, lit_at_limit = 0;
+    for (int i = 0; i < test::case_count(200); ++i) {
+        shape.scene.dim = i % 2 == 0 ? 3 : 2;
+        const Scene s = test::random_optics_scene(rng, shape);
+        if (s.single_trajectory()) continue;
+        const Answer full = solve(s);
+        REQUIRE(full.decided());
+        SolveOptions options;
+        options.max_state_bytes = 1500;
+        const Answer a = solve(s, options);
+        INFO("case " << i << "\n" << write_scene(s));
+        CHECK(a.stats.illumination.state_bytes <= 1500);
+        if (a.reason != Reason::limit) {
+            CHECK(a.reason == full.reason);
+            continue;
+        }
+        ++limited;
+        CHECK(a.limit == Limit::memory);
+        check_partial(a, full);
+        for (const TargetAnswer& t : a.targets) lit_at_limit += t.status == Status::lit;
+    }
+    CHECK(limited > 10);
+    CHECK(lit_at_limit > 0);
+}
+
+TEST_CASE("a long one-sided stretch stores no states", "[illumination]") {
+    // Ray 1 runs in a 997 x 1000 box along (1, 1): its orbit visits every
+    // boundary point of its class before it closes, thousands of events.
+    // The one-way mirror x+ 500 lets it cross one way only, so the stretch
+    // is a rho (a tail, then a cycle on one side). A splitter far away,
+    // met only by ray 2, makes this the illumination question.
+    const Scene s = read_scene("dim 2\nmirror x 0 y 0 1000\nmirror x 997 y 0 1000\n"
+                               "mirror y 0 x 0 997\nmirror y 1000 x 0 997\n"
+                               "mirror x+ 500 y 0 1000\nsplitter x 5000 y -10 10\n"
+                               "ray 1 0 1 1\nray 4000 0 1 0\n"
+                               "target 5000 5000\ntarget 3000 0\n");
+    const Answer a = solve(s);
+    REQUIRE(a.targets.size() == 2);
+    CHECK(a.targets[0].status == Status::unlit);
+    CHECK(a.targets[1].status == Status::lit); // ray 2's reflected branch, back along y = 0
+    CHECK(a.targets[1].reflections == 1);
+    CHECK(a.targets[1].ray == 2);
+    // Ray 1's start, ray 2's start, the two states leaving the splitter.
+    CHECK(a.states == 4);
+    CHECK(a.stats.illumination.events > 2000);
+    CHECK(a.stats.illumination.state_bytes < 4096);
+}
+
+TEST_CASE("the branch state set keeps states exactly and compactly", "[illumination]") {
+    Scene s = read_scene("dim 3\nray 0 0 0 1 2 3\nray 0 0 0 -2 -4 -6\ntarget 1 1 1\n");
+    engine::ByteBudget budget(std::nullopt);
+    engine::BranchStateSet set(s, budget);
+    std::mt19937_64 rng(1217);
+    std::vector<std::pair<Vector, Vector>> kept;
+    for (int i = 0; i < 2000; ++i) {
+        Vector p, v{1, 2, 3};
+        for (int j = 0; j < 3; ++j) {
+            // Small and huge numerators, a few denominators, both signs.
+            Rational q(Integer(static_cast<long>(uniform(rng, -300, 300))),
+                       Integer(static_cast<long>(uniform(rng, 1, 4))));
+            if (i % 50 == 0) q *= Rational(Integer("123456789012345678901234567890"));
+            q.canonicalize();
+            p[j] = q;
+            if (test::chance(rng, 50)) v[j] = -v[j];
+        }
+        if (i % 3 == 0) v = Vector{2 * v[0], 2 * v[1], 2 * v[2]}; // ray 2's class
+        const auto at = set.insert(p, v);
+        REQUIRE(at);
+        if (at->added) {
+            CHECK(at->index == kept.size());
+            kept.emplace_back(p, v);
+        } else {
+            CHECK(kept[at->index] == std::make_pair(p, v));
+        }
+    }
+    CHECK(set.size() == kept.size());
+    for (std::uint32_t i = 0; i < kept.size(); ++i) {
+        Vector p, v;
+        set.state(i, p, v);
+        CHECK(std::make_pair(p, v) == kept[i]);
+        const auto again = set.insert(p, v);
+        CHECK((again && !again->added && again->index == i));
+    }
+    // Mostly 2-byte coordinates: well under 16 bytes of key per state.
+    CHECK(set.key_bytes() < 16 * kept.size());
+    // A budget that cannot hold the next state refuses it, changing nothing.
+    engine::ByteBudget tight(400);
+    engine::BranchStateSet small(s, tight);
+    std::size_t added = 0;
+    for (int i = 0; i < 100; ++i)
+        if (small.insert(Vector{i, 0, 0}, Vector{1, 2, 3})) ++added;
+    CHECK(added > 0);
+    CHECK(added < 100);
+    CHECK(small.size() == added);
+    CHECK(tight.used() <= 400);
+}
