@@ -28,5 +28,9 @@ Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);
 Command add_render(CLI::App& app);
+Command add_puzzle(CLI::App& app);
+// The subcommands of `puzzle`.
+Command add_puzzle_scene(CLI::App& puzzle);
+Command add_puzzle_solve(CLI::App& puzzle);
 
 } // namespace orthoray::cli

@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
     Command bounds = add_bounds(app);
     Command render = add_render(app);
     Command convert = add_convert(app);
+    Command puzzle = add_puzzle(app);
 
     // CLI11 would call an unknown command a missing one; name it instead.
     auto is_command = [&](const char* word) {
@@ -68,7 +69,8 @@ int main(int argc, char** argv) {
     };
     if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
         std::cerr << "orthoray: found the command '" << argv[1]
-                  << "', expected solve, verify, pieces, generate, bounds, render or convert (see "
+                  << "', expected solve, verify, pieces, generate, bounds, render, convert or "
+                     "puzzle (see "
                      "'orthoray --help')\n";
         return bad_input;
     }
@@ -86,6 +88,7 @@ int main(int argc, char** argv) {
                            : app.got_subcommand("bounds")   ? bounds()
                            : app.got_subcommand("render")   ? render()
                            : app.got_subcommand("convert")  ? convert()
+                           : app.got_subcommand("puzzle")   ? puzzle()
                                                             : pieces();
         finish_standard_output();
         return status;

@@ -1,0 +1,21 @@
+// orthoray puzzle: Lazor levels (.bff), docs/puzzles.md. The subcommands
+// live in their own files; this one only groups them.
+#include "commands.hpp"
+
+namespace orthoray::cli {
+
+Command add_puzzle(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "puzzle", "Lazor levels (.bff files): translate one to a scene, or find a placement\n"
+                  "of its blocks that lights every point (docs/puzzles.md).\n\n"
+                  "Example:\n"
+                  "  orthoray puzzle solve level.bff -o solved.bff\n"
+                  "  orthoray puzzle scene level.bff --placement solved.bff -o level.scene\n"
+                  "  orthoray solve level.scene");
+    cmd->require_subcommand(1);
+    Command scene = add_puzzle_scene(*cmd);
+    Command solve = add_puzzle_solve(*cmd);
+    return [cmd, scene, solve] { return cmd->got_subcommand("scene") ? scene() : solve(); };
+}
+
+} // namespace orthoray::cli
