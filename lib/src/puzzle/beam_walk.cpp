@@ -82,8 +82,14 @@ BeamWalk::BeamWalk(const LazorLevel& level)
     const std::size_t positions = static_cast<std::size_t>(columns_) * (2 * height_ + 1);
     state_seen_.assign(4 * positions, 0);
     position_seen_.assign(positions, 0);
-    for (const LazorLaser& l : level.lasers)
-        lasers_.push_back((l.y * columns_ + l.x) * 4 + direction_index(l.dx, l.dy));
+    for (const LazorLaser& l : level.lasers) {
+        // The block ahead sends a branch back across the start edge by
+        // negating the component across it.
+        const bool vertical = l.x % 2 == 0;
+        starts_.push_back(Start{(l.y * columns_ + l.x) * 4 + direction_index(l.dx, l.dy),
+                                cell_behind(level, l),
+                                direction_index(vertical ? -l.dx : l.dx, vertical ? l.dy : -l.dy)});
+    }
     for (const LazorPoint& p : level.points) points_.push_back(p.y * columns_ + p.x);
 }
 
@@ -99,60 +105,69 @@ int BeamWalk::run(const std::vector<Content>& cells, unsigned can_place) {
         return column >= 0 && column < width_ && row >= 0 && row < height_ ? row * width_ + column
                                                                            : -1;
     };
-    for (const int start : lasers_) {
-        if (state_seen_[start] == stamp_) continue;
-        state_seen_[start] = stamp_;
-        stack_.push_back(start);
+    // One state: the acting table at its edge point, then the next states.
+    auto step = [&](int state, const Start* start) {
+        const int position = state >> 2, d = state & 3;
+        const int x = position % columns_, y = position / columns_;
+        position_seen_[position] = stamp_;
+        // The cells before and after the edge through (x, y), and which of
+        // the two the branch enters.
+        const bool vertical = x % 2 == 0;
+        const int low =
+            vertical ? cell_at(x / 2 - 1, (y - 1) / 2) : cell_at((x - 1) / 2, y / 2 - 1);
+        const int high = vertical ? cell_at(x / 2, (y - 1) / 2) : cell_at((x - 1) / 2, y / 2);
+        const bool enters_high = vertical ? (d & 1) != 0 : (d & 2) != 0;
+        const int entered = enters_high ? high : low, left = enters_high ? low : high;
+        // A block on the cell being left never acts (its edges face
+        // outward; the tests check the table agrees), so an undecided cell
+        // there counts as empty.
+        const Content left_content = left < 0 || cells[left] == undecided ? empty : cells[left];
+        Content entered_content = entered < 0 ? empty : cells[entered];
+        auto outcome = [&](Content in) {
+            return table_
+                .at(vertical, enters_high ? left_content : in, enters_high ? in : left_content, d)
+                .directions;
+        };
+        std::uint8_t directions = 0;
+        if (entered_content != undecided) {
+            directions = outcome(entered_content);
+        } else if constexpr (Relaxed) {
+            // Whatever may still be placed there, or nothing.
+            for (unsigned k = 0; k < 4; ++k)
+                if (k == empty || (can_place & (1u << k)))
+                    directions |= outcome(static_cast<Content>(k));
+        } else {
+            if (first_undecided < 0) first_undecided = entered;
+            directions = outcome(empty);
+        }
+        // At a laser's start, a branch sent back into a reflect or opaque
+        // block behind it ends (docs/puzzles.md); sent back into an
+        // undecided cell, it enters that cell.
+        if (start && start->behind >= 0 && (directions & (1u << start->back))) {
+            const Content behind = cells[start->behind];
+            if (behind == reflect || behind == opaque)
+                directions &= static_cast<std::uint8_t>(~(1u << start->back));
+            else if (!Relaxed && behind == undecided && first_undecided < 0)
+                first_undecided = start->behind;
+        }
+        for (int next = 3; next >= 0; --next) {
+            if (!(directions & (1u << next))) continue;
+            const int nx = x + (next & 1 ? 1 : -1), ny = y + (next & 2 ? 1 : -1);
+            if (nx < 0 || nx >= columns_ || ny < 0 || ny > 2 * height_) continue; // leaves
+            const int to = (ny * columns_ + nx) * 4 + next;
+            if (state_seen_[to] == stamp_) continue;
+            state_seen_[to] = stamp_;
+            stack_.push_back(to);
+        }
+    };
+    for (const Start& start : starts_) {
+        if (state_seen_[start.state] == stamp_) continue;
+        state_seen_[start.state] = stamp_;
+        step(start.state, &start);
         while (!stack_.empty()) {
             const int state = stack_.back();
             stack_.pop_back();
-            const int position = state >> 2, d = state & 3;
-            const int x = position % columns_, y = position / columns_;
-            position_seen_[position] = stamp_;
-            // The cells before and after the edge through (x, y), and which
-            // of the two the branch enters.
-            const bool vertical = x % 2 == 0;
-            const int low =
-                vertical ? cell_at(x / 2 - 1, (y - 1) / 2) : cell_at((x - 1) / 2, y / 2 - 1);
-            const int high = vertical ? cell_at(x / 2, (y - 1) / 2) : cell_at((x - 1) / 2, y / 2);
-            const bool enters_high = vertical ? (d & 1) != 0 : (d & 2) != 0;
-            const int entered = enters_high ? high : low, left = enters_high ? low : high;
-            // A block on the cell being left never acts (its edges face
-            // outward; the tests check the table agrees), so an undecided
-            // cell there counts as empty.
-            const Content left_content = left < 0 || cells[left] == undecided ? empty : cells[left];
-            Content entered_content = entered < 0 ? empty : cells[entered];
-            std::uint8_t directions = 0;
-            if (entered_content == undecided) {
-                if constexpr (Relaxed) {
-                    for (unsigned k = 0; k < 4; ++k) {
-                        if (k != empty && !(can_place & (1u << k))) continue;
-                        const auto c = static_cast<Content>(k);
-                        directions |= table_
-                                          .at(vertical, enters_high ? left_content : c,
-                                              enters_high ? c : left_content, d)
-                                          .directions;
-                    }
-                } else {
-                    if (first_undecided < 0) first_undecided = entered;
-                    entered_content = empty;
-                }
-            }
-            if (!Relaxed || entered_content != undecided) {
-                const EdgeOutcome& o =
-                    table_.at(vertical, enters_high ? left_content : entered_content,
-                              enters_high ? entered_content : left_content, d);
-                directions |= o.directions;
-            }
-            for (int next = 3; next >= 0; --next) {
-                if (!(directions & (1u << next))) continue;
-                const int nx = x + (next & 1 ? 1 : -1), ny = y + (next & 2 ? 1 : -1);
-                if (nx < 0 || nx >= columns_ || ny < 0 || ny > 2 * height_) continue; // leaves
-                const int to = (ny * columns_ + nx) * 4 + next;
-                if (state_seen_[to] == stamp_) continue;
-                state_seen_[to] = stamp_;
-                stack_.push_back(to);
-            }
+            step(state, nullptr);
         }
     }
     return first_undecided;

@@ -71,9 +71,15 @@ private:
     template <bool Relaxed>
     int run(const std::vector<Content>& cells, unsigned can_place);
 
+    // A laser's first state, the cell behind it (-1 outside the grid) and
+    // the direction a branch sent back into that cell would take.
+    struct Start {
+        int state, behind, back;
+    };
+
     int width_, height_, columns_; // columns_ = 2 * width + 1 edge positions a row
-    std::vector<int> lasers_;      // state index of each laser's start
-    std::vector<int> points_;      // position index of each point
+    std::vector<Start> starts_;
+    std::vector<int> points_; // position index of each point
     std::vector<std::uint32_t> state_seen_, position_seen_;
     std::uint32_t stamp_ = 0;
     std::vector<int> stack_;

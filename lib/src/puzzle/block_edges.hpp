@@ -22,4 +22,17 @@ std::array<Element, 4> block_edges(LazorCell block, int column, int row, int hei
 Vector scene_point(int x, int y, int height);
 Vector scene_direction(int dx, int dy);
 
+// The cell a laser starts from: on the other side of its start edge from
+// the cell it moves into. Its index in the grid, or -1 outside the grid.
+int cell_behind(const LazorLevel& level, const LazorLaser& laser);
+
+// Whether a branch that the cell ahead of a start sends back into the cell
+// behind it ends there: when that cell holds a reflect or opaque block
+// (docs/puzzles.md, "Lasers that start on a block").
+bool stops_branches_back(LazorCell behind);
+
+// The element that makes it so in the scene: a one-sided absorber a quarter
+// step inside the cell behind, across the path of the branch sent back.
+Element start_guard(const LazorLaser& laser, int height);
+
 } // namespace orthoray::puzzle

@@ -59,6 +59,38 @@ Vector scene_direction(int dx, int dy) {
     return Vector{Rational(dx), Rational(-dy), Rational(0)};
 }
 
+int cell_behind(const LazorLevel& level, const LazorLaser& laser) {
+    const bool vertical = laser.x % 2 == 0;
+    const int column =
+        vertical ? (laser.dx > 0 ? laser.x / 2 - 1 : laser.x / 2) : (laser.x - 1) / 2;
+    const int row = vertical ? (laser.y - 1) / 2 : (laser.dy > 0 ? laser.y / 2 - 1 : laser.y / 2);
+    if (column < 0 || column >= level.width || row < 0 || row >= level.height) return -1;
+    return row * level.width + column;
+}
+
+bool stops_branches_back(LazorCell behind) {
+    return behind == LazorCell::reflect || behind == LazorCell::opaque;
+}
+
+Element start_guard(const LazorLaser& laser, int height) {
+    // The block ahead can only send a branch back by negating the component
+    // across the start edge; the guard lies across that edge's axis, a
+    // quarter step into the cell behind, half a step either side of the
+    // start along the edge, and acts only on rays moving into that cell.
+    const int axis = laser.x % 2 == 0 ? 0 : 1;
+    const Vector start = scene_point(laser.x, laser.y, height);
+    const Vector v = scene_direction(laser.dx, laser.dy);
+    Element guard;
+    guard.kind = ElementKind::absorber;
+    guard.axis = axis;
+    guard.side = sgn(v[axis]) > 0 ? Side::plus : Side::minus; // the way back is -v[axis]
+    guard.lo[axis] = guard.hi[axis] = start[axis] - v[axis] / 4;
+    const int other = 1 - axis;
+    guard.lo[other] = start[other] - Rational(1, 2);
+    guard.hi[other] = start[other] + Rational(1, 2);
+    return guard;
+}
+
 } // namespace puzzle
 
 Scene lazor_scene(const LazorLevel& level) {
@@ -74,6 +106,9 @@ Scene lazor_scene(const LazorLevel& level) {
                 scene.elements.push_back(std::move(e));
         }
     for (const LazorLaser& laser : level.lasers) {
+        const int behind = puzzle::cell_behind(level, laser);
+        if (behind >= 0 && puzzle::stops_branches_back(level.cells[behind]))
+            scene.elements.push_back(puzzle::start_guard(laser, level.height));
         Ray ray;
         ray.line = laser.line;
         ray.direction = puzzle::scene_direction(laser.dx, laser.dy);
