@@ -11,9 +11,11 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -31,23 +33,28 @@ struct PuzzleSolveArgs {
 using Clock = std::chrono::steady_clock;
 
 // Sets `stop` once the deadline passes or SIGINT/SIGTERM arrives, checking
-// every few milliseconds, until the search is over.
+// every few milliseconds, until the search is over (then it wakes at once).
 class StopWatcher {
 public:
     StopWatcher(std::atomic<bool>& stop, std::optional<Clock::time_point> deadline)
         : thread_([this, &stop, deadline] {
-              while (!done_.load()) {
+              std::unique_lock lock(mutex_);
+              while (!done_) {
                   if (InterruptGuard::requested()) {
                       interrupted_ = true;
                       stop = true;
                   } else if (deadline && Clock::now() >= *deadline) {
                       stop = true;
                   }
-                  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                  wake_.wait_for(lock, std::chrono::milliseconds(5));
               }
           }) {}
     ~StopWatcher() {
-        done_ = true;
+        {
+            const std::lock_guard lock(mutex_);
+            done_ = true;
+        }
+        wake_.notify_one();
         thread_.join();
     }
     StopWatcher(const StopWatcher&) = delete;
@@ -55,7 +62,10 @@ public:
     bool interrupted() const { return interrupted_.load(); }
 
 private:
-    std::atomic<bool> done_{false}, interrupted_{false};
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool done_ = false;
+    std::atomic<bool> interrupted_{false};
     std::thread thread_;
 };
 
@@ -123,12 +133,13 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
     if (max_nodes->count() > 0) options.max_nodes = args.max_nodes;
     LazorSolution solution;
     bool interrupted = false;
+    const Clock::time_point begin_search = Clock::now();
     {
         const StopWatcher watcher(stop, deadline);
         solution = solve_lazor(level, options);
         interrupted = watcher.interrupted();
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+    const double seconds = std::chrono::duration<double>(Clock::now() - begin_search).count();
     const std::string limit = solution.limit == "nodes" ? "nodes"
                               : interrupted             ? "interrupt"
                                                         : "time";
