@@ -128,10 +128,10 @@ LazorSolution solve_lazor(const LazorLevel& level, const LazorSolveOptions& opti
     LazorSolution solution;
     Integer count = 0;
     bool complete = true;
+    for (const SubtreeResult& r : results) solution.nodes += r.nodes;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const SubtreeResult& r = results[i];
-        solution.nodes += r.nodes;
-        if (!options.all && solution.placed) continue;
+        if (!options.all && solution.placed) break;
         if (!r.complete) {
             complete = false;
             if (!options.all) break; // an earlier subtree may hold the first solution
