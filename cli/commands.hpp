@@ -32,5 +32,6 @@ Command add_puzzle(CLI::App& app);
 // The subcommands of `puzzle`.
 Command add_puzzle_scene(CLI::App& puzzle);
 Command add_puzzle_solve(CLI::App& puzzle);
+Command add_puzzle_generate(CLI::App& puzzle);
 
 } // namespace orthoray::cli

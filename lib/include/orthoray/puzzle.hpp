@@ -108,4 +108,27 @@ struct LazorSolution {
 // its scene before it is returned.
 LazorSolution solve_lazor(const LazorLevel& level, const LazorSolveOptions& options = {});
 
+// What `orthoray puzzle generate` builds (docs/puzzles.md, "Generation").
+struct LazorGenerateOptions {
+    int width = 5, height = 5;          // in blocks, 1 to lazor_max_side
+    std::array<int, 3> blocks{3, 0, 0}; // reflect, opaque, refract blocks to place
+    int lasers = 1, points = 3;         // at least 1 each
+    bool unique = true;                 // only levels with exactly one solution
+    std::uint64_t seed = 1;             // the same level for the same options
+    int attempts = 500;                 // placements tried before giving up
+    std::uint64_t max_nodes = 50'000;   // search nodes to count one candidate's solutions
+};
+
+struct LazorGenerated {
+    LazorLevel level;        // the blocks to place, lasers and points
+    LazorLevel solution;     // the same with the blocks placed
+    int attempts = 0;        // candidates built, this one included
+    std::uint64_t nodes = 0; // search nodes to count its solutions: a measure of difficulty
+};
+
+// A level whose points the intended placement lights (and, with `unique`,
+// no other placement does, as the solver's count proves). Nothing when no
+// candidate within `attempts` qualifies.
+std::optional<LazorGenerated> generate_lazor_level(const LazorGenerateOptions& options);
+
 } // namespace orthoray
