@@ -184,7 +184,7 @@ TEST_CASE("an unknown command is named in the message", "[cli]") {
     const CliResult r = run_cli("frobnicate");
     require_bad_input(r);
     CHECK(r.err == "orthoray: found the command 'frobnicate', expected solve, verify, pieces, "
-                   "generate, bounds, render or convert (see 'orthoray --help')\n");
+                   "generate, bounds, render, convert or puzzle (see 'orthoray --help')\n");
 }
 
 // ---------------------------------------------------------------- help

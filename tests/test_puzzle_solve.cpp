@@ -90,7 +90,7 @@ TEST_CASE("the unsolvable public levels are proven unsolvable", "[puzzle][solve]
     }
 }
 
-TEST_CASE("--all counts agree with brute force on small levels", "[puzzle][solve]") {
+TEST_CASE("solution counts (--all) agree with brute force on small levels", "[puzzle][solve]") {
     const auto folder = lazor_folder();
     if (!folder) {
         WARN("../shared/puzzles/lazor is absent beside the source tree: small levels skipped");
