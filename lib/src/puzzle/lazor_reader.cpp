@@ -299,8 +299,7 @@ private:
         LazorLaser laser;
         laser.line = line_;
         const auto [x, x_column] = take_coordinate("the laser's x", 'x');
-        const auto [y, y_column] = take_coordinate("the laser's y", 'y');
-        (void)y_column;
+        const int y = take_coordinate("the laser's y", 'y').first;
         if ((x + y) % 2 == 0)
             fail(x_column, "found the laser at (" + std::to_string(x) + ", " + std::to_string(y) +
                                "), " + (x % 2 == 0 ? "a block corner" : "a block centre") +
