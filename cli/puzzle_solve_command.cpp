@@ -94,6 +94,16 @@ void print_json(const LazorSolution& s, const std::string& limit, unsigned jobs,
     if (s.status == LazorSolution::Status::limit)
         std::cout << ",\"limit\":" << nlohmann::json(limit).dump();
     if (s.placed) std::cout << ",\"grid\":" << grid.dump();
+    if (!s.points.empty()) {
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+            points.push_back({{"point", i + 1},
+                              {"x", s.placed->points[i].x},
+                              {"y", s.placed->points[i].y},
+                              {"laser", s.points[i].ray},
+                              {"reflections", s.points[i].reflections.get_ui()}});
+        std::cout << ",\"points\":" << points.dump();
+    }
     // An exact integer, printed in full.
     if (!s.solutions.empty()) std::cout << ",\"solutions\":" << s.solutions;
     std::cout << ",\"nodes\":" << s.nodes << ",\"jobs\":" << jobs
@@ -102,6 +112,10 @@ void print_json(const LazorSolution& s, const std::string& limit, unsigned jobs,
 
 void print_text(const LazorSolution& s, const std::string& limit, double seconds) {
     if (s.placed) std::cout << write_lazor_grid(*s.placed);
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+        std::printf("point %zu (%d, %d)  lit by laser %zu after %s reflections\n", i + 1,
+                    s.placed->points[i].x, s.placed->points[i].y, s.points[i].ray,
+                    s.points[i].reflections.get_str().c_str());
     std::printf("answer       %s\n", answer_word(s.status));
     if (s.status == LazorSolution::Status::limit)
         std::printf("reason       limit (%s)\n", limit == "time"    ? "--timeout reached"
@@ -181,9 +195,10 @@ Command add_puzzle_solve(CLI::App& puzzle) {
                  "2 bad input or usage, 3 a limit (--timeout, --max-nodes, SIGINT or SIGTERM)\n"
                  "stopped the search first, 5 an output could not be written.");
     cmd->add_option("LEVEL", args->level, "the level (.bff)")->required();
-    cmd->add_flag("--json", args->json,
-                  "print one JSON object: answer (solved, unsolvable, unknown), grid (rows), "
-                  "solutions (with --all), nodes, jobs, seconds");
+    cmd->add_flag(
+        "--json", args->json,
+        "print one JSON object: answer (solved, unsolvable, unknown), grid (rows), points, "
+        "solutions (with --all), nodes, jobs, seconds");
     cmd->add_option("-o,--output", args->out,
                     "write the solved level here (.bff, the blocks placed in its grid)");
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")

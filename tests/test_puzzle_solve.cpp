@@ -168,6 +168,10 @@ TEST_CASE("puzzle solve and puzzle scene on the command line", "[puzzle][solve][
     CliResult r = run_cli("puzzle solve " + quote(level) + " -o " + quote(solved));
     CHECK(r.status == 0);
     CHECK(r.out.rfind("GRID START\no o C o\no o o A\nA o o o\no o o o\nGRID STOP\n"
+                      "point 1 (3, 0)  lit by laser 1 after 1 reflections\n"
+                      "point 2 (4, 3)  lit by laser 1 after 2 reflections\n"
+                      "point 3 (2, 5)  lit by laser 1 after 2 reflections\n"
+                      "point 4 (4, 7)  lit by laser 1 after 3 reflections\n"
                       "answer       solved\n",
                       0) == 0);
     // The solved file is a level with every block fixed, and a placement.
@@ -190,6 +194,10 @@ TEST_CASE("puzzle solve and puzzle scene on the command line", "[puzzle][solve][
     CHECK(j["solutions"] == 1);
     CHECK(j["grid"] == nlohmann::json::parse(R"(["o o C o","o o o A","A o o o","o o o o"])"));
     CHECK(j["jobs"] == 2);
+    CHECK(j["points"][3] ==
+          nlohmann::json::parse(R"({"point":4,"x":4,"y":7,"laser":1,"reflections":3})"));
+    CHECK(r.out.find(R"("points":[{"point":1,"x":3,"y":0,"laser":1,"reflections":1},)") !=
+          std::string::npos);
 
     r = run_cli("puzzle solve --max-nodes 2 " + quote(level));
     CHECK(r.status == 3);

@@ -4,6 +4,7 @@
 // docs/puzzles.md.
 #pragma once
 
+#include "orthoray/answer.hpp"
 #include "orthoray/scene.hpp"
 
 #include <array>
@@ -100,6 +101,10 @@ struct LazorSolution {
     std::uint64_t nodes = 0; // search nodes visited
     // limit: which limit ("nodes" or "stop").
     std::string limit;
+    // solved: for each point in file order, what solve() said of it on the
+    // placed level's scene: the least reflections before a branch reaches
+    // it, and the least-numbered laser that does (docs/optics.md).
+    std::vector<TargetAnswer> points;
 };
 
 // Searches for a placement of exactly the level's blocks on open cells that

@@ -72,12 +72,20 @@ LazorLevel placement_of(const LazorLevel& level, Board board) {
 }
 
 // The solution once more, by the library's own illumination engine on the
-// translated scene: a disagreement is a bug, not an answer.
-void recheck(const LazorLevel& placed) {
+// translated scene: a disagreement is a bug, not an answer. Returns what
+// the engine says of each point.
+std::vector<TargetAnswer> recheck(const LazorLevel& placed) {
     const Answer answer = solve(lazor_scene(placed));
     if (!answer.yes())
         throw std::logic_error("the placement search found a placement that solve() says "
                                "leaves a point unlit");
+    if (answer.illumination()) return answer.targets;
+    // One laser, one point, no splitter: a single trajectory that hits.
+    TargetAnswer hit;
+    hit.status = TargetAnswer::Status::lit;
+    hit.reflections = answer.reflections;
+    hit.ray = 1;
+    return {hit};
 }
 
 } // namespace
@@ -151,7 +159,7 @@ LazorSolution solve_lazor(const LazorLevel& level, const LazorSolveOptions& opti
         solution.status = LazorSolution::Status::unsolvable;
         return solution;
     }
-    recheck(*solution.placed);
+    solution.points = recheck(*solution.placed);
     solution.status = LazorSolution::Status::solved;
     return solution;
 }
