@@ -6,8 +6,9 @@ namespace orthoray::cli {
 
 Command add_puzzle(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
-        "puzzle", "Lazor levels (.bff files): translate one to a scene, or find a placement\n"
-                  "of its blocks that lights every point (docs/puzzles.md).\n\n"
+        "puzzle", "Lazor levels (.bff files): translate one to a scene, find a placement of\n"
+                  "its blocks that lights every point, or generate new levels with a unique\n"
+                  "solution (docs/puzzles.md).\n\n"
                   "Example:\n"
                   "  orthoray puzzle solve level.bff -o solved.bff\n"
                   "  orthoray puzzle scene level.bff --placement solved.bff -o level.scene\n"
