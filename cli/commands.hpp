@@ -32,6 +32,11 @@ Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);
 Command add_render(CLI::App& app);
+Command add_puzzle(CLI::App& app);
+// The subcommands of `puzzle`.
+Command add_puzzle_scene(CLI::App& puzzle);
+Command add_puzzle_solve(CLI::App& puzzle);
+Command add_puzzle_generate(CLI::App& puzzle);
 Command add_realistic(CLI::App& app);
 Command add_batch(CLI::App& app);
 

@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     Command bounds = add_bounds(app);
     Command render = add_render(app);
     Command convert = add_convert(app);
+    Command puzzle = add_puzzle(app);
     Command realistic = add_realistic(app);
     Command batch = add_batch(app);
 
@@ -92,6 +93,7 @@ int main(int argc, char** argv) {
                            : app.got_subcommand("bounds")    ? bounds()
                            : app.got_subcommand("render")    ? render()
                            : app.got_subcommand("convert")   ? convert()
+                           : app.got_subcommand("puzzle")    ? puzzle()
                            : app.got_subcommand("realistic") ? realistic()
                            : app.got_subcommand("batch")     ? batch()
                                                              : pieces();

@@ -10,6 +10,7 @@
 #include "orthoray/number.hpp"      // exact integers and rationals
 #include "orthoray/parse.hpp"       // reading scene files
 #include "orthoray/pieces.hpp"      // the 2D piece tables, printable
+#include "orthoray/puzzle.hpp"      // Lazor levels: reading, their scenes, the placement search
 #include "orthoray/realistic.hpp"   // intensity-limited illumination (Isobe et al.)
 #include "orthoray/render.hpp"      // SVG pictures
 #include "orthoray/scene.hpp"       // the scene model

@@ -1,0 +1,219 @@
+// orthoray puzzle solve LEVEL.bff: find a placement of the level's blocks that
+// lights every point (docs/puzzles.md, "The search").
+#include "commands.hpp"
+#include "option_checks.hpp"
+#include "orthoray/parse.hpp"
+#include "orthoray/puzzle.hpp"
+#include "output_file.hpp"
+#include "run_monitor.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace orthoray::cli {
+namespace {
+
+struct PuzzleSolveArgs {
+    std::string level, out;
+    bool json = false, all = false;
+    unsigned jobs = 0;
+    double timeout = 0;
+    std::uint64_t max_nodes = 0;
+};
+
+using Clock = std::chrono::steady_clock;
+
+// Sets `stop` once the deadline passes or SIGINT/SIGTERM arrives, checking
+// every few milliseconds, until the search is over (then it wakes at once).
+class StopWatcher {
+public:
+    StopWatcher(std::atomic<bool>& stop, std::optional<Clock::time_point> deadline)
+        : thread_([this, &stop, deadline] {
+              std::unique_lock lock(mutex_);
+              while (!done_) {
+                  if (InterruptGuard::requested()) {
+                      interrupted_ = true;
+                      stop = true;
+                  } else if (deadline && Clock::now() >= *deadline) {
+                      stop = true;
+                  }
+                  wake_.wait_for(lock, std::chrono::milliseconds(5));
+              }
+          }) {}
+    ~StopWatcher() {
+        {
+            const std::lock_guard lock(mutex_);
+            done_ = true;
+        }
+        wake_.notify_one();
+        thread_.join();
+    }
+    StopWatcher(const StopWatcher&) = delete;
+    StopWatcher& operator=(const StopWatcher&) = delete;
+    bool interrupted() const { return interrupted_.load(); }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool done_ = false;
+    std::atomic<bool> interrupted_{false};
+    std::thread thread_;
+};
+
+const char* answer_word(LazorSolution::Status status) {
+    switch (status) {
+    case LazorSolution::Status::solved:
+        return "solved";
+    case LazorSolution::Status::unsolvable:
+        return "unsolvable";
+    case LazorSolution::Status::limit:
+        break;
+    }
+    return "unknown";
+}
+
+void print_json(const LazorSolution& s, const std::string& limit, unsigned jobs, double seconds) {
+    nlohmann::json grid = nlohmann::json::array();
+    if (s.placed)
+        for (int row = 0; row < s.placed->height; ++row) {
+            std::string text;
+            for (int column = 0; column < s.placed->width; ++column)
+                text += std::string(column ? " " : "") + lazor_letter(s.placed->at(column, row));
+            grid.push_back(text);
+        }
+    std::cout << "{\"answer\":" << nlohmann::json(answer_word(s.status)).dump();
+    if (s.status == LazorSolution::Status::limit)
+        std::cout << ",\"limit\":" << nlohmann::json(limit).dump();
+    if (s.placed) std::cout << ",\"grid\":" << grid.dump();
+    if (!s.points.empty()) {
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+            points.push_back({{"point", i + 1},
+                              {"x", s.placed->points[i].x},
+                              {"y", s.placed->points[i].y},
+                              {"laser", s.points[i].ray},
+                              {"reflections", s.points[i].reflections.get_ui()}});
+        std::cout << ",\"points\":" << points.dump();
+    }
+    // An exact integer, printed in full.
+    if (!s.solutions.empty()) std::cout << ",\"solutions\":" << s.solutions;
+    std::cout << ",\"nodes\":" << s.nodes << ",\"jobs\":" << jobs
+              << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
+}
+
+void print_text(const LazorSolution& s, const std::string& limit, double seconds) {
+    if (s.placed) std::cout << write_lazor_grid(*s.placed);
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+        std::printf("point %zu (%d, %d)  lit by laser %zu after %s reflections\n", i + 1,
+                    s.placed->points[i].x, s.placed->points[i].y, s.points[i].ray,
+                    s.points[i].reflections.get_str().c_str());
+    std::printf("answer       %s\n", answer_word(s.status));
+    if (s.status == LazorSolution::Status::limit)
+        std::printf("reason       limit (%s)\n", limit == "time"    ? "--timeout reached"
+                                                 : limit == "nodes" ? "--max-nodes reached"
+                                                                    : "interrupted");
+    if (!s.solutions.empty()) std::printf("solutions    %s\n", s.solutions.c_str());
+    std::printf("nodes        %llu\n", static_cast<unsigned long long>(s.nodes));
+    std::printf("time         %.3f ms\n", seconds * 1e3);
+}
+
+int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
+    const Clock::time_point begin = Clock::now();
+    std::optional<Clock::time_point> deadline;
+    if (args.timeout > 0)
+        deadline = begin + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                               std::chrono::duration<double>(args.timeout));
+    const InterruptGuard interrupts;
+    const LazorLevel level = load_lazor_level(args.level); // bad input ends here
+    // Refuse a bad output path before searching.
+    std::optional<OutputFile> out;
+    if (!args.out.empty())
+        out.emplace(args.out, std::vector<std::string>{args.level}, "the solved level");
+
+    std::atomic<bool> stop{false};
+    LazorSolveOptions options;
+    options.jobs = args.jobs;
+    options.all = args.all;
+    options.stop = &stop;
+    if (max_nodes->count() > 0) options.max_nodes = args.max_nodes;
+    LazorSolution solution;
+    bool interrupted = false;
+    const Clock::time_point begin_search = Clock::now();
+    {
+        const StopWatcher watcher(stop, deadline);
+        solution = solve_lazor(level, options);
+        interrupted = watcher.interrupted();
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - begin_search).count();
+    const std::string limit = solution.limit == "nodes" ? "nodes"
+                              : interrupted             ? "interrupt"
+                                                        : "time";
+    const unsigned jobs =
+        args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    if (out && solution.placed) {
+        out->stream() << write_lazor_level(*solution.placed,
+                                           "solved by orthoray puzzle solve: " + args.level);
+        out->commit();
+    }
+    if (args.json)
+        print_json(solution, limit, jobs, seconds);
+    else
+        print_text(solution, limit, seconds);
+    switch (solution.status) {
+    case LazorSolution::Status::solved:
+        return yes;
+    case LazorSolution::Status::unsolvable:
+        return no;
+    case LazorSolution::Status::limit:
+        break;
+    }
+    return Exit::limit;
+}
+
+} // namespace
+
+Command add_puzzle_solve(CLI::App& puzzle) {
+    auto args = std::make_shared<PuzzleSolveArgs>();
+    CLI::App* cmd = puzzle.add_subcommand(
+        "solve", "Find a placement of exactly the level's blocks on its open cells that lights\n"
+                 "every point, and print the solved grid (.bff GRID syntax). The placement\n"
+                 "printed is the first in the search order of docs/puzzles.md, the same for\n"
+                 "any --jobs; it is checked once more by the illumination engine on the\n"
+                 "level's scene.\n\n"
+                 "Example:\n"
+                 "  orthoray puzzle solve level.bff -o solved.bff\n\n"
+                 "Exit status: 0 solved, 1 proven unsolvable (the whole space searched),\n"
+                 "2 bad input or usage, 3 a limit (--timeout, --max-nodes, SIGINT or SIGTERM)\n"
+                 "stopped the search first, 5 an output could not be written.");
+    cmd->add_option("LEVEL", args->level, "the level (.bff)")->required();
+    cmd->add_flag(
+        "--json", args->json,
+        "print one JSON object: answer (solved, unsolvable, unknown), grid (rows), points, "
+        "solutions (with --all), nodes, jobs, seconds");
+    cmd->add_option("-o,--output", args->out,
+                    "write the solved level here (.bff, the blocks placed in its grid)");
+    cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
+        ->check(CLI::Range(1u, 1024u));
+    cmd->add_flag("--all", args->all,
+                  "search the whole space and count every placement that lights every point");
+    cmd->add_option("--timeout", args->timeout,
+                    "stop after SECONDS (a decimal, counted from the start): answer unknown, "
+                    "exit 3")
+        ->check(timeout_seconds());
+    CLI::Option* max_nodes =
+        cmd->add_option("--max-nodes", args->max_nodes,
+                        "visit at most N search nodes; without an answer by then, exit 3")
+            ->check(whole_number_u64());
+    return [args, max_nodes] { return run(*args, max_nodes); };
+}
+
+} // namespace orthoray::cli
