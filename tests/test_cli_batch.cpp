@@ -244,7 +244,12 @@ TEST_CASE("batch stopped by SIGINT keeps what it decided and exits 3", "[batch][
     const pid_t child = spawn_cli(
         {"batch", dir.path(""), "--engine", "lattice", "--jobs", "2", "-o", out, "--quiet"},
         dir.path("out"), dir.path("err"));
-    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    // Signal it once it is deciding (its first line is written), not
+    // before it has set up its handlers: a SIGINT then ends it as any
+    // program, with nothing written.
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+    while (slurp(out).empty() && std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
     REQUIRE(kill(child, SIGINT) == 0);
     const int status = wait_for(child);
     if (status == 0) {
