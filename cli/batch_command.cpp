@@ -19,9 +19,12 @@ namespace orthoray::cli {
 namespace {
 
 void check(const BatchArgs& args) {
-    if (!args.certificates.empty() && args.choices.engine == "graph")
-        throw UsageError("found --engine graph with --certificates, expected another engine "
-                         "(the graph engine writes no certificate)");
+    if (!args.certificates.empty() &&
+        (args.choices.engine == "graph" || args.choices.engine == "reference"))
+        throw UsageError("found --engine " + args.choices.engine +
+                         " with --certificates, expected another engine (the graph engine, and "
+                         "the reference engine on the illumination question, write no "
+                         "certificate)");
     if (!args.certificates.empty() && !std::filesystem::is_directory(args.certificates))
         throw UsageError("found --certificates '" + args.certificates +
                          "', expected an existing directory");

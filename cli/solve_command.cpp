@@ -121,6 +121,13 @@ int run(const SolveArgs& args, const CLI::Option* certificate) {
                                                  : Limit::time),
                       0);
     }
+    // The reference illumination search keeps every state and proves
+    // nothing: it writes no certificate.
+    if (certificate->count() > 0 && args.choices.engine == "reference" &&
+        !scene.single_trajectory())
+        throw UsageError("found --engine reference with --certificate for the illumination "
+                         "question, expected another engine (the reference illumination search "
+                         "writes no certificate)");
     SolveOptions options = args.choices.options();
     // The illumination search keeps its branch states within three quarters
     // of the same budget, so it ends with Limit::memory at a state boundary,

@@ -206,3 +206,49 @@ TEST_CASE("the branch state set keeps states exactly and compactly", "[illuminat
     CHECK(small.size() == added);
     CHECK(tight.used() <= 400);
 }
+
+TEST_CASE("branch search and reference search agree with the state graph on 5000 scenes",
+          "[illumination][property][slow]") {
+    // Three readings of the illumination question: the default search over
+    // branch states, the reference search that stores every exact state in
+    // a map, and Boost.Graph's BFS and Dijkstra over the explicit graph.
+    // Every target's status, least reflections and ray must agree.
+    std::mt19937_64 rng(50'000);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 35;
+    shape.one_sided_percent = 30;
+    shape.scene.max_elements = 7;
+    const int cases = test::case_count(5000);
+    int compared = 0, lit = 0, unlit = 0;
+    SolveOptions reference;
+    reference.engine = Engine::reference;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 2 == 0 ? 3 : 2;
+        shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
+        shape.max_rays = 1 + i % 3;
+        shape.max_targets = 1 + (i / 3) % 3;
+        const Scene s = test::random_optics_scene(rng, shape);
+        if (s.single_trajectory()) continue;
+        const std::optional<Answer> graph = explore_illumination_graph(s, 20000);
+        if (!graph) continue;
+        ++compared;
+        INFO("case " << i << "\n" << write_scene(s));
+        const Answer branches = solve(s), plain = solve(s, reference);
+        CHECK(branches.engine == EngineUsed::branches);
+        CHECK(plain.engine == EngineUsed::reference);
+        for (const Answer* a : {&branches, &plain}) {
+            CHECK(a->reason == graph->reason);
+            CHECK(a->reflections == graph->reflections);
+            REQUIRE(a->targets.size() == graph->targets.size());
+            for (std::size_t t = 0; t < a->targets.size(); ++t) {
+                CHECK(a->targets[t].status == graph->targets[t].status);
+                CHECK(a->targets[t].reflections == graph->targets[t].reflections);
+                CHECK(a->targets[t].ray == graph->targets[t].ray);
+            }
+        }
+        for (const TargetAnswer& t : graph->targets) (t.status == Status::lit ? lit : unlit) += 1;
+    }
+    CHECK(compared > cases * 3 / 5);
+    CHECK(lit > compared / 2);
+    CHECK(unlit > compared / 4);
+}

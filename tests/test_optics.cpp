@@ -62,7 +62,7 @@ TEST_CASE("a splitter lights targets on both of its branches", "[optics]") {
     check_lit(a.targets[1], 1, 1); // reflected back
     CHECK(a.targets[2].status == Status::unlit);
     CHECK(a.states == 3); // the start and the two states leaving the splitter
-    CHECK(a.engine == EngineUsed::reference);
+    CHECK(a.engine == EngineUsed::branches);
 
     Scene lit = s;
     lit.targets.pop_back();

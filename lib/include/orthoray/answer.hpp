@@ -33,8 +33,9 @@ struct TargetAnswer {
 
 // What actually ran, as opposed to what SolveOptions asks for (where
 // "automatic" leaves the choice to the library). `none`: nothing ran, as
-// when memory ran out before an engine started.
-enum class EngineUsed { none, lattice, induction, reference, graph };
+// when memory ran out before an engine started. `branches`: the
+// illumination question's branch-state search (docs/optics.md).
+enum class EngineUsed { none, lattice, induction, reference, graph, branches };
 // The integers it computed with: machine ones, GMP, or rationals (the
 // reference tracer and the state graph).
 enum class ArithmeticUsed { none, int64, int128, gmp, rational };
@@ -100,7 +101,7 @@ struct Answer {
 const char* to_string(Reason reason);
 // "steps", "time", "memory", "interrupt".
 const char* to_string(Limit limit);
-// "lattice", "induction", "reference", "graph"; "" for none.
+// "lattice", "induction", "reference", "graph", "branches"; "" for none.
 const char* to_string(EngineUsed engine);
 // "int64", "int128", "gmp", "rational"; "" for none.
 const char* to_string(ArithmeticUsed arithmetic);

@@ -46,6 +46,8 @@ const char* to_string(EngineUsed engine) {
         return "induction";
     case EngineUsed::reference:
         return "reference";
+    case EngineUsed::branches:
+        return "branches";
     case EngineUsed::graph:
         return "graph";
     }

@@ -184,7 +184,7 @@ private:
 
     Answer conclude() {
         Answer answer;
-        answer.engine = EngineUsed::reference;
+        answer.engine = EngineUsed::branches;
         answer.arithmetic = ArithmeticUsed::rational;
         answer.targets.assign(scene_.targets.size(), TargetAnswer{});
         // At a limit a candidate is final only when no waiting branch state

@@ -4,6 +4,7 @@
 #include "engine/cycle_detector.hpp"
 #include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
+#include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
 #include "orthoray/state_graph.hpp"
 
@@ -81,10 +82,14 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
         if (options.path && !options.illumination_observer)
             throw std::invalid_argument("the illumination question streams its certificate to an "
                                         "IlluminationObserver, not a PathSink");
-        if (options.engine != Engine::graph) return engine::solve_illumination(scene, options);
+        if (options.engine != Engine::graph && options.engine != Engine::reference)
+            return engine::solve_illumination(scene, options);
         if (options.illumination_observer)
-            throw std::invalid_argument("the graph engine does not write certificates");
-        return solve_illumination_by_graph(scene, options);
+            throw std::invalid_argument("the graph and reference engines write no illumination "
+                                        "certificates");
+        return options.engine == Engine::graph
+                   ? solve_illumination_by_graph(scene, options)
+                   : engine::solve_illumination_by_reference(scene, options);
     }
     switch (options.engine) {
     case Engine::reference:
