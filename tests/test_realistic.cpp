@@ -148,7 +148,8 @@ TEST_CASE("the dynamic program agrees with every path tried, on random models",
           "[realistic][slow]") {
     std::mt19937_64 rng(1994);
     int yes = 0, none = 0;
-    for (int round = 0; round < case_count(4000); ++round) {
+    const int cases = case_count(4000);
+    for (int round = 0; round < cases; ++round) {
         const RealisticModel m = random_model(rng);
         const RealisticAnswer a = solve_realistic(m);
         CAPTURE(round);
@@ -159,9 +160,10 @@ TEST_CASE("the dynamic program agrees with every path tried, on random models",
         const std::string certificate = certificate_of(m);
         REQUIRE(check(m, certificate).valid);
     }
-    // The sample holds both answers and models where nothing arrives.
-    CHECK(yes > 400);
-    CHECK(none > 400);
+    // The sample holds both answers and models where nothing arrives (each
+    // more than a tenth, in the full run and in the sanitizers' quarter).
+    CHECK(yes > cases / 10);
+    CHECK(none > cases / 10);
 }
 
 TEST_CASE("tampered realistic certificates are rejected for the reason changed", "[realistic]") {
