@@ -31,15 +31,8 @@ int run(const RealisticArgs& args) {
         write_realistic_certificate(out.stream(), model, answer);
         out.commit();
     }
-    std::string path, arrivals;
-    for (const std::size_t object : answer.path)
-        path += (path.empty() ? "" : " ") + model.objects[object];
-    for (const Integer& i : answer.intensities)
-        arrivals += (arrivals.empty() ? "" : " ") + i.get_str();
     if (args.json) {
-        nlohmann::json j;
-        j["answer"] = answer.yes ? "yes" : "no";
-        std::cout << "{\"answer\":" << j["answer"].dump()
+        std::cout << "{\"answer\":" << (answer.yes ? "\"yes\"" : "\"no\"")
                   << ",\"best\":" << (answer.best < 0 ? std::string("null") : answer.best.get_str())
                   << ",\"eps\":" << model.eps.get_str() << ",\"path\":[";
         for (std::size_t k = 0; k < answer.path.size(); ++k)
@@ -55,8 +48,11 @@ int run(const RealisticArgs& args) {
                     answer.best < 0 ? "none arrives" : answer.best.get_str().c_str(),
                     model.eps.get_str().c_str());
         if (!answer.path.empty()) {
-            std::printf("path         %s\n", path.c_str());
-            std::printf("arrivals     %s\n", arrivals.c_str());
+            std::string path, arrivals;
+            for (const std::size_t object : answer.path) path += ' ' + model.objects[object];
+            for (const Integer& i : answer.intensities) arrivals += ' ' + i.get_str();
+            std::printf("path        %s\n", path.c_str());
+            std::printf("arrivals    %s\n", arrivals.c_str());
         }
         std::printf("pairs        %zu\n", answer.bounds.size());
         std::printf("time         %.3f ms\n", seconds * 1e3);
