@@ -87,7 +87,7 @@ TEST_CASE("branch-state search agrees with the state graph on splitter-rich scen
         }
         fewer += a.states < graph->states;
         for (const TargetAnswer& t : a.targets) (t.status == Status::lit ? lit : unlit) += 1;
-        // A random cap on the branch states expanded: a limit or the answer.
+        // A random cap on the events stepped: a limit or the answer.
         SolveOptions capped;
         capped.max_steps = static_cast<std::uint64_t>(uniform(rng, 0, 6));
         const Answer c = solve(s, capped);
@@ -156,6 +156,26 @@ TEST_CASE("a long one-sided stretch stores no states", "[illumination]") {
     CHECK(a.states == 4);
     CHECK(a.stats.illumination.events > 2000);
     CHECK(a.stats.illumination.state_bytes < 4096);
+}
+
+TEST_CASE("max_steps caps the events of one endless stretch", "[illumination]") {
+    // Found by fuzz_solve: a direction of slope ~7.8e74 in a 6 x 5 box
+    // bounces ~10^74 times between y = 0 and y = 5 before it first meets
+    // the one-way mirror, so the single stretch from the ray's start never
+    // ends in practice. A cap on the branch states expanded (one here)
+    // never stopped it; the cap on events does, after exactly that many.
+    const Scene s = read_scene(
+        "dim 2\nmirror x- 0 y 0 4\nmirror x 6 y 0 4\nmirror y 0 x 0 6\nmirror y 5 x 0 6\n"
+        "mirror x+ 3 y 1 3\nray 1 1 1 "
+        "777777777777777777777777777777777777777777777777777777777777777777777777771\n"
+        "target 2 1\ntarget 2 1\n");
+    SolveOptions options;
+    options.max_steps = 2000;
+    const Answer a = solve(s, options);
+    CHECK(a.reason == Reason::limit);
+    CHECK(a.limit == Limit::steps);
+    CHECK(a.stats.illumination.events == 2000);
+    for (const TargetAnswer& t : a.targets) CHECK(t.status == Status::unknown);
 }
 
 TEST_CASE("the branch state set keeps states exactly and compactly", "[illumination]") {

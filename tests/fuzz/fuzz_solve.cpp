@@ -16,8 +16,8 @@
 
 namespace {
 
-// Small caps: the default illumination search expands at most this many
-// states, and the graph engine refuses scenes with more reachable states.
+// Small caps: the default illumination search steps at most this many
+// events, and the graph engine refuses scenes with more reachable states.
 constexpr std::uint64_t optics_states = 2000;
 
 bool same_target(const orthoray::TargetAnswer& a, const orthoray::TargetAnswer& b) {

@@ -91,10 +91,6 @@ private:
             // with a final count.
             if (!options_.illumination_observer && all_final(next->label)) return;
             pending_ = next->label;
-            if (options_.max_steps && expanded_ == *options_.max_steps) {
-                limit_ = Limit::steps;
-                return;
-            }
             if (!poll()) return;
             records_[next->state].settled = 1;
             ++expanded_;
@@ -160,6 +156,13 @@ private:
         const StretchEnd end = walk_stretch(
             stepper_, p, v,
             [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
+                // --max-steps caps the events stepped in all stretches
+                // together, not the branch states: one stretch alone can
+                // be 10^70 reflections long before it repeats.
+                if (options_.max_steps && events_ == *options_.max_steps) {
+                    limit_ = Limit::steps;
+                    return false;
+                }
                 ++events_;
                 const Label here{label.reflections + w, label.ray};
                 for (std::size_t t = 0; t < best_.size(); ++t) {
