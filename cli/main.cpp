@@ -108,6 +108,9 @@ int main(int argc, char** argv) {
     } catch (const orthoray::InputError& e) {
         std::cerr << e.what() << '\n';
         return bad_input;
+    } catch (const orthoray::UnsupportedScene& e) {
+        std::cerr << "orthoray: " << e.what() << '\n';
+        return bad_input;
     } catch (const UsageError& e) {
         std::cerr << "orthoray: " << e.what() << '\n';
         return bad_input;

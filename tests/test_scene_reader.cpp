@@ -375,7 +375,26 @@ std::vector<Malformed> malformed_cases() {
 
         // Mirrors and absorbers: arity.
         {"mirror with nothing", "dim 2\nmirror\n", 2, 7,
-         "found end of line, expected the normal axis (x or y)"},
+         "found end of line, expected the normal axis (x or y) or a diagonal (/ or \\)"},
+
+        // Diagonal elements (docs/octagonal.md).
+        {"a diagonal in 3D", "dim 3\nmirror / 0 0 1 1\n", 2, 8,
+         "found '/' in a 3D scene, expected the normal axis (x, y or z): diagonal elements are "
+         "2D only"},
+        {"a sign on a diagonal", "dim 2\nsplitter \\- 0 1 1 0\n", 2, 10,
+         "found '\\-', expected '/' or '\\' alone: diagonal elements are two-sided, with no "
+         "sign"},
+        {"a doubled diagonal", "dim 2\nmirror // 0 0 1 1\n", 2, 8,
+         "found '//', expected '/' or '\\' alone"},
+        {"a diagonal off its slope", "dim 2\nmirror / 0 0 2 3\n", 2, 16,
+         "found '3' as the second endpoint's y, expected 2 (a segment of slope +1)"},
+        {"a falling diagonal written rising", "dim 2\nabsorber \\ 0 0 1 1\n", 2, 18,
+         "found '1' as the second endpoint's y, expected -1 (a segment of slope -1)"},
+        {"a diagonal with X0 = X1", "dim 2\nmirror / 1 0 1 0\n", 2, 14,
+         "found '1' as the second endpoint's x, expected a number greater than 1 (the first "
+         "endpoint's x)"},
+        {"a diagonal short of an endpoint", "dim 2\nmirror / 0 0 1\n", 2, 15,
+         "found end of line, expected the second endpoint's y"},
         {"mirror without an offset", "dim 2\nmirror x\n", 2, 9,
          "found end of line, expected the offset x = c"},
         {"mirror without an extent", "dim 2\nmirror x 0 # no extent\n", 2, 12,

@@ -35,6 +35,7 @@ std::size_t input_bits(const Scene& scene) {
 } // namespace
 
 StateBounds compute_bounds(const Scene& scene, bool with_pieces) {
+    refuse_diagonals(scene, "bounds");
     const LatticeScene ls = lattice::make_lattice(scene);
     StateBounds b;
     b.dim = ls.dim;

@@ -290,6 +290,7 @@ Reason read_reason(const certify::CertificateReader& in) {
 
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name) {
+    refuse_diagonals(scene, "verify");
     certify::CertificateReader in(certificate, certificate_name);
     PathCheck path(scene);
     Claim claim;

@@ -70,6 +70,7 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
+    refuse_diagonals(scene, "solve");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided

@@ -24,6 +24,7 @@ enum : std::size_t { start_vertex = 0, escape_vertex = 1, absorbed_vertex = 2, f
 
 std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uint64_t max_states,
                                                     RunMonitor* monitor) {
+    refuse_diagonals(scene, "the state graph");
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     const unsigned directions = 1u << ls.dim;
 

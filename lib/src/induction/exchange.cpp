@@ -31,6 +31,7 @@ std::optional<IntervalExchange> exchange_on(const lattice::LatticeScene& scene) 
 } // namespace
 
 std::optional<IntervalExchange> exchange_of(const Scene& scene) {
+    refuse_diagonals(scene, "the interval exchange of a scene");
     if (scene.dim != 2) return std::nullopt;
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     if (ls.dim != 2) return std::nullopt; // a direction along an axis: no exchange

@@ -4,6 +4,8 @@
 // (or key) at fault.
 #include "orthoray/parse.hpp"
 
+#include <algorithm>
+
 #include "io/json_document.hpp"
 
 #include <string>
@@ -172,7 +174,11 @@ private:
     void read_element(const JsonValue& value) {
         expect_type(value, JsonValue::Type::object,
                     "an element {\"kind\": ..., \"axis\": ..., \"offset\": ..., \"extent\": ...}");
-        check_keys(value, {"kind", "axis", "side", "offset", "extent"});
+        const bool diagonal = value.find("diagonal") != nullptr;
+        if (diagonal)
+            check_keys(value, {"kind", "diagonal", "from", "to"});
+        else
+            check_keys(value, {"kind", "axis", "side", "offset", "extent"});
         Element e;
         e.line = value.line;
         const char* kinds = "\"mirror\", \"absorber\" or \"splitter\"";
@@ -185,6 +191,7 @@ private:
             e.kind = ElementKind::splitter;
         else
             fail(kind, "found " + io::describe(kind) + ", expected " + kinds);
+        if (diagonal) return read_diagonal(value, e);
         // No "side": two-sided. "+" or "-": one-sided (docs/optics.md).
         if (const JsonValue* side = value.find("side")) {
             if (side->type == JsonValue::Type::string && side->text == "+")
@@ -232,6 +239,41 @@ private:
                      "found " + io::describe(range.items[1]) + " as the upper end of the " + name +
                          " extent, expected a number greater than " + to_string(e.lo[j]));
         }
+        scene_.elements.push_back(std::move(e));
+    }
+
+    // {"kind": ..., "diagonal": "/" or "\\", "from": [X0, Y0], "to": [X1, Y1]}
+    // (docs/octagonal.md): 2D only, X0 < X1, on a line of the named slope.
+    void read_diagonal(const JsonValue& value, Element& e) {
+        const JsonValue& sign = *value.find("diagonal");
+        if (scene_.dim != 2)
+            fail(sign, "found \"diagonal\" in a 3D scene, expected an axis-aligned element "
+                       "(\"axis\", \"offset\", \"extent\"): diagonal elements are 2D only");
+        if (sign.type == JsonValue::Type::string && sign.text == "/")
+            e.diagonal = Diagonal::rising;
+        else if (sign.type == JsonValue::Type::string && sign.text == "\\")
+            e.diagonal = Diagonal::falling;
+        else
+            fail(sign, "found " + io::describe(sign) +
+                           ", expected the diagonal \"/\" (slope +1) or \"\\\\\" (slope -1)");
+        e.axis = -1;
+        const Vector a =
+            point(member(value, "from", "the first endpoint [X0, Y0]"), "the first endpoint");
+        const JsonValue& to = member(value, "to", "the second endpoint [X1, Y1]");
+        const Vector b = point(to, "the second endpoint");
+        if (!(a[0] < b[0]))
+            fail(to.items[0], "found " + io::describe(to.items[0]) +
+                                  " as the second endpoint's x, expected a number greater than " +
+                                  to_string(a[0]) + " (the first endpoint's x)");
+        const Rational wanted = e.diagonal == Diagonal::rising ? Rational(a[1] + (b[0] - a[0]))
+                                                               : Rational(a[1] - (b[0] - a[0]));
+        if (b[1] != wanted)
+            fail(to.items[1], "found " + io::describe(to.items[1]) +
+                                  " as the second endpoint's y, expected " + to_string(wanted) +
+                                  " (a segment of slope " +
+                                  (e.diagonal == Diagonal::rising ? "+1" : "-1") + ")");
+        e.lo = {a[0], std::min(a[1], b[1]), Rational(0)};
+        e.hi = {b[0], std::max(a[1], b[1]), Rational(0)};
         scene_.elements.push_back(std::move(e));
     }
 

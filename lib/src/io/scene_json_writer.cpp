@@ -21,6 +21,16 @@ std::string write_scene_json(const Scene& scene) {
     out << "{\n  \"dim\": " << scene.dim << ",\n  \"elements\": [";
     for (std::size_t i = 0; i < scene.elements.size(); ++i) {
         const Element& e = scene.elements[i];
+        if (e.is_diagonal()) {
+            out << (i ? ",\n" : "\n") << "    {\"kind\": \"" << to_string(e.kind)
+                << "\", \"diagonal\": \"" << (e.diagonal == Diagonal::rising ? "/" : "\\\\")
+                << "\", \"from\": ";
+            write_point(out, e.from(), 2);
+            out << ", \"to\": ";
+            write_point(out, e.to(), 2);
+            out << '}';
+            continue;
+        }
         out << (i ? ",\n" : "\n") << "    {\"kind\": \"" << to_string(e.kind) << "\", \"axis\": \""
             << axis_name(e.axis) << '"';
         if (e.one_sided()) out << ", \"side\": \"" << side_sign(e.side) << '"';

@@ -6,6 +6,7 @@
 
 #include "io/quoted_token.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -205,7 +206,9 @@ private:
         e.line = line_;
         const std::string axis_forms = "the normal axis (" + axis_letters() + ") of a " +
                                        std::to_string(scene_.dim) + "D scene";
-        const Token& a = take("the normal axis (" + axis_letters() + ")");
+        const Token& a = take("the normal axis (" + axis_letters() + ")" +
+                              (scene_.dim == 2 ? " or a diagonal (/ or \\)" : ""));
+        if (a.text.starts_with('/') || a.text.starts_with('\\')) return read_diagonal(e, a);
         if (!axis_of(a, e.axis, e.side)) {
             // A token that starts like an axis went wrong in its sign.
             const bool signed_axis =
@@ -238,6 +241,45 @@ private:
                          " extent, expected a number greater than " + to_string(e.lo[j]));
         }
         expect_end_of_line();
+        scene_.elements.push_back(std::move(e));
+    }
+
+    // `KIND / X0 Y0 X1 Y1` or `KIND \\ X0 Y0 X1 Y1` (docs/octagonal.md): 2D
+    // only, two-sided, X0 < X1, and the endpoints on a line of the slope the
+    // sign names.
+    void read_diagonal(Element& e, const Token& sign) {
+        if (scene_.dim != 2)
+            fail(sign.column, "found " + quoted(sign.text) +
+                                  " in a 3D scene, expected the normal axis (x, y or z): "
+                                  "diagonal elements are 2D only");
+        if (sign.text.size() != 1)
+            fail(sign.column, "found " + quoted(sign.text) + ", expected '/' or '\\' alone" +
+                                  (sign.text[1] == '+' || sign.text[1] == '-'
+                                       ? ": diagonal elements are two-sided, with no sign"
+                                       : ""));
+        e.axis = -1;
+        e.diagonal = sign.text == "/" ? Diagonal::rising : Diagonal::falling;
+        const Rational x0 = take_number("the first endpoint's x");
+        const Rational y0 = take_number("the first endpoint's y");
+        const Token& x1_token = tokens_[next_ < tokens_.size() ? next_ : 0];
+        const Rational x1 = take_number("the second endpoint's x");
+        if (!(x0 < x1))
+            fail(x1_token.column, "found " + quoted(x1_token.text) +
+                                      " as the second endpoint's x, expected a number greater "
+                                      "than " +
+                                      to_string(x0) + " (the first endpoint's x)");
+        const Token& y1_token = tokens_[next_ < tokens_.size() ? next_ : 0];
+        const Rational y1 = take_number("the second endpoint's y");
+        const Rational wanted =
+            e.diagonal == Diagonal::rising ? Rational(y0 + (x1 - x0)) : Rational(y0 - (x1 - x0));
+        if (y1 != wanted)
+            fail(y1_token.column, "found " + quoted(y1_token.text) +
+                                      " as the second endpoint's y, expected " + to_string(wanted) +
+                                      " (a segment of slope " +
+                                      (e.diagonal == Diagonal::rising ? "+1" : "-1") + ")");
+        expect_end_of_line();
+        e.lo = {x0, std::min(y0, y1), Rational(0)};
+        e.hi = {x1, std::max(y0, y1), Rational(0)};
         scene_.elements.push_back(std::move(e));
     }
 

@@ -1,6 +1,7 @@
 // Building scenes in code, and writing them back as .scene text.
 #include "orthoray/scene.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,6 +27,27 @@ const char* side_sign(Side side) {
     return side == Side::plus ? "+" : side == Side::minus ? "-" : "";
 }
 
+const char* diagonal_sign(Diagonal diagonal) {
+    return diagonal == Diagonal::rising ? "/" : diagonal == Diagonal::falling ? "\\" : "";
+}
+
+Vector Element::from() const {
+    return {lo[0], diagonal == Diagonal::falling ? hi[1] : lo[1], Rational(0)};
+}
+
+Vector Element::to() const {
+    return {hi[0], diagonal == Diagonal::falling ? lo[1] : hi[1], Rational(0)};
+}
+
+bool Element::contains(const Vector& q) const {
+    for (int j = 0; j < 3; ++j)
+        if (q[j] < lo[j] || hi[j] < q[j]) return false;
+    // In its box, a diagonal's points are those on its line.
+    if (diagonal == Diagonal::rising) return q[1] - q[0] == lo[1] - lo[0];
+    if (diagonal == Diagonal::falling) return q[0] + q[1] == lo[0] + hi[1];
+    return true;
+}
+
 bool Scene::single_trajectory() const {
     if (rays.size() != 1 || targets.size() != 1) return false;
     for (const Element& e : elements)
@@ -37,6 +59,38 @@ bool Scene::has_one_sided() const {
     for (const Element& e : elements)
         if (e.one_sided()) return true;
     return false;
+}
+
+void refuse_diagonals(const Scene& scene, const std::string& what) {
+    for (const Element& e : scene.elements)
+        if (e.is_diagonal())
+            throw UnsupportedScene(what + " does not take diagonal elements (the one on line " +
+                                   std::to_string(e.line) + "); docs/octagonal.md says what does");
+}
+
+bool Scene::has_diagonal() const {
+    for (const Element& e : elements)
+        if (e.is_diagonal()) return true;
+    return false;
+}
+
+void Scene::add_diagonal(ElementKind kind, const Rational& x0, const Rational& y0,
+                         const Rational& x1, const Rational& y1) {
+    if (dim != 2) throw std::invalid_argument("Scene::add_diagonal: diagonals are 2D only");
+    const Rational run = x1 - x0, rise = y1 - y0;
+    if (!(x0 < x1) || (rise != run && rise != -run))
+        throw std::invalid_argument("Scene::add_diagonal: not a segment of slope +1 or -1");
+    Element e;
+    e.kind = kind;
+    e.axis = -1;
+    e.diagonal = rise == run ? Diagonal::rising : Diagonal::falling;
+    e.lo = {x0, std::min(y0, y1), Rational(0)};
+    e.hi = {x1, std::max(y0, y1), Rational(0)};
+    for (int j = 0; j < 2; ++j) {
+        e.lo[j].canonicalize();
+        e.hi[j].canonicalize();
+    }
+    elements.push_back(e);
 }
 
 void Scene::add(ElementKind kind, int axis, const Rational& offset,
@@ -68,6 +122,13 @@ std::string write_scene(const Scene& scene) {
     std::ostringstream out;
     out << "dim " << scene.dim << '\n';
     for (const Element& e : scene.elements) {
+        if (e.is_diagonal()) {
+            const Vector a = e.from(), b = e.to();
+            out << to_string(e.kind) << ' ' << diagonal_sign(e.diagonal) << ' ' << to_string(a[0])
+                << ' ' << to_string(a[1]) << ' ' << to_string(b[0]) << ' ' << to_string(b[1])
+                << '\n';
+            continue;
+        }
         out << to_string(e.kind) << ' ' << axis_name(e.axis) << side_sign(e.side) << ' '
             << to_string(e.offset());
         for (int j = 0; j < scene.dim; ++j)

@@ -6,6 +6,7 @@
 namespace orthoray {
 
 PieceTableSummary write_piece_tables(const Scene& scene, std::ostream& out) {
+    refuse_diagonals(scene, "the piece tables");
     PieceTableSummary summary;
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     if (scene.dim != 2 || ls.dim != 2) return summary;
