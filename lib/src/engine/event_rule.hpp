@@ -11,8 +11,8 @@
 namespace orthoray::engine {
 
 // Whether `element` acts on a ray moving along v at a point that lies on it:
-// the ray is not parallel to the element's plane, and the element is
-// two-sided or its sign names the side the ray arrives from.
+// the ray is not parallel to the element's plane (or diagonal line), and the
+// element is two-sided or its sign names the side the ray arrives from.
 bool acts_on(const Element& element, const Vector& v);
 
 // One direction leaving an event point.
@@ -26,7 +26,9 @@ struct EventOutcome {
     // Empty when absorbed. Otherwise v with the components of F negated, for
     // every F with R <= F <= R + S (R: axes where a mirror acts, S: axes
     // where only splitters act); the first entry is F = R, the ray's only
-    // way on when no splitter acts.
+    // way on when no splitter acts. Where a diagonal acts (docs/octagonal.md):
+    // -v when another orientation acts too; else v swapped (and negated for
+    // '\') by a mirror, or v then v swapped by splitters.
     std::vector<Outgoing> outgoing;
 };
 
