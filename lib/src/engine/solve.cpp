@@ -71,9 +71,11 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // Diagonals (docs/octagonal.md): so far only the reference tracer
-    // follows them.
-    if (!scene.single_trajectory() || options.engine != Engine::reference)
+    // Diagonals (docs/octagonal.md): the illumination engines and, for a
+    // single trajectory, the reference tracer and the state graph follow
+    // them; the lattice and induction engines do not yet.
+    if (scene.single_trajectory() && options.engine != Engine::reference &&
+        options.engine != Engine::graph)
         refuse_diagonals(scene, "solve");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
