@@ -640,3 +640,16 @@ TEST_CASE("a step limit holds for the induction engine too", "[cli][induction]")
         CHECK(parse_json(enough.out)["reflections"] == 65535);
     }
 }
+
+TEST_CASE("'-' reads the scene from standard input", "[cli]") {
+    const std::string box = source_path("instances/2d/box-corner-3x5.scene");
+    const CliResult piped = run_cli("solve --json -", box);
+    const CliResult named = run_cli("solve --json " + quote(box));
+    REQUIRE(piped.status == 0);
+    CHECK(nlohmann::json::parse(piped.out)["reflections"] ==
+          nlohmann::json::parse(named.out)["reflections"]);
+    // Errors name the file '-'; JSON needs --format json, as nothing names it.
+    const CliResult bad = run_cli("solve -");
+    CHECK(bad.status == 2);
+    CHECK(bad.err.starts_with("-:1:1: found end of file"));
+}
