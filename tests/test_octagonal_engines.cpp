@@ -1,6 +1,7 @@
 // Octagonal scenes (docs/octagonal.md): the engines that follow diagonals
 // held to each other on seeded random scenes, and their certificates to the
 // independent verifier.
+#include "engine/branch_state_set.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
@@ -17,6 +18,45 @@
 
 using namespace orthoray;
 using Status = TargetAnswer::Status;
+
+TEST_CASE("the branch state set tells swapped directions apart exactly",
+          "[octagonal][illumination]") {
+    // With a diagonal, (1, 2) can turn into (2, 1), (-2, -1), ...: eight
+    // directions in two classes, (|1|, |2|) and (|2|, |1|), each with four
+    // sign masks. Every one is a state of its own and decodes to itself.
+    const Scene s = read_scene("dim 2\nmirror / 0 0 1 1\nray 0 0 1 2\ntarget 5 5\n");
+    engine::ByteBudget budget(std::nullopt);
+    engine::BranchStateSet set(s, budget);
+    std::vector<Vector> directions;
+    for (const int a : {1, -1})
+        for (const int b : {2, -2}) {
+            directions.push_back({a, b, 0});
+            directions.push_back({b, a, 0});
+        }
+    const Vector p{Rational(1, 3), 2, 0};
+    for (std::size_t i = 0; i < directions.size(); ++i) {
+        const auto at = set.insert(p, directions[i]);
+        REQUIRE(at);
+        CHECK(at->added);
+        CHECK(at->index == i);
+    }
+    for (std::uint32_t i = 0; i < directions.size(); ++i) {
+        Vector q, v;
+        set.state(i, q, v);
+        CHECK(q == p);
+        CHECK(v == directions[i]);
+        const auto again = set.insert(p, directions[i]);
+        CHECK((again && !again->added && again->index == i));
+    }
+    // Along a diagonal direction the swap is the same class: (1, 1) and
+    // (-1, -1) are two states, not four.
+    const Scene along = read_scene("dim 2\nmirror \\ 0 1 1 0\nray 0 0 1 1\ntarget 5 5\n");
+    engine::BranchStateSet diagonal_set(along, budget);
+    CHECK(diagonal_set.insert(p, Vector{1, 1, 0})->added);
+    CHECK(diagonal_set.insert(p, Vector{-1, -1, 0})->added);
+    CHECK_FALSE(diagonal_set.insert(p, Vector{1, 1, 0})->added);
+    CHECK(diagonal_set.size() == 2);
+}
 
 TEST_CASE("reference tracer and state graph agree on random octagonal trajectories",
           "[octagonal][property]") {
