@@ -108,7 +108,7 @@ TEST_CASE("reference tracer and state graph agree on random octagonal trajectori
 }
 
 TEST_CASE("branches, reference and graph illumination agree on random octagonal scenes",
-          "[octagonal][property]") {
+          "[octagonal][property][slow]") {
     // Three readings of the illumination question with diagonal splitters:
     // the branch-state search, the reference Dijkstra over every state, and
     // Boost.Graph's BFS and Dijkstra over the explicit graph.
