@@ -375,7 +375,7 @@ TEST_CASE("random one-sided trajectory with the target on it: the constructed an
 }
 
 TEST_CASE("random octagonal scenes: diagonals as asked, the constructed answer",
-          "[generate][octagonal]") {
+          "[generate][octagonal][slow]") {
     // The lattice engine and the bounds do not take diagonals: the
     // reference tracer and the state graph must both give the answer the
     // generator built.

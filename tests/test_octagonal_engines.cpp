@@ -59,7 +59,7 @@ TEST_CASE("the branch state set tells swapped directions apart exactly",
 }
 
 TEST_CASE("reference tracer and state graph agree on random octagonal trajectories",
-          "[octagonal][property]") {
+          "[octagonal][property][slow]") {
     // Two readings of one trajectory: stepping with Brent's detector (and
     // the second pass for the tail), and breadth-first search with strong
     // components on the graph of the states reached.
@@ -196,7 +196,7 @@ std::string raise_reflections(std::vector<std::string> lines, const std::string&
 } // namespace
 
 TEST_CASE("certificates of random octagonal scenes verify, tampered ones fail",
-          "[octagonal][certificate][property]") {
+          "[octagonal][certificate][property][slow]") {
     // The certificate is written from the engines' event rule, the check is
     // the verifier's own reading of diagonals (certify/acting_rule.cpp): the
     // two must agree on every scene, and a changed count, point or dropped
