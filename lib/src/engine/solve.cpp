@@ -6,6 +6,7 @@
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
+#include "induction/octagonal_engine.hpp"
 #include "orthoray/state_graph.hpp"
 
 #include <new>
@@ -70,6 +71,9 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
+    // Octagonal mazes: the induction engine decides single trajectories.
+    if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::induction)
+        return induction::solve_octagonal(scene, options);
     refuse_diagonals(scene, "solve");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
