@@ -39,6 +39,11 @@ int index_of(const int (&m)[2][2]) {
 }
 
 template <class Int>
+Int cross(const Point<Int>& d, const Point<Int>& p) {
+    return Int(d[0] * p[1] - d[1] * p[0]);
+}
+
+template <class Int>
 Point<Int> apply(int g, const Point<Int>& p) {
     const auto& m = symmetries()[static_cast<std::size_t>(g)].m;
     return {Int(m[0][0] * p[0] + m[0][1] * p[1]), Int(m[1][0] * p[0] + m[1][1] * p[1])};
@@ -167,6 +172,17 @@ OctagonalScene<Int> make_octagonal(const Scene& scene) {
         const Vector d = s.direction_vector(g);
         auto& acts = s.acting[static_cast<std::size_t>(g)];
         for (const Element& e : scene.elements) acts.push_back(engine::acts_on(e, d) ? 1 : 0);
+        const Point<Int>& dir = s.direction[static_cast<std::size_t>(g)];
+        std::vector<typename IntervalStabbing<Int>::Interval> ranges;
+        for (std::size_t i = 0; i < s.segments.size(); ++i) {
+            if (!acts[i]) continue;
+            const Segment<Int>& seg = s.segments[i];
+            Int lo = cross(dir, point_on(seg.orientation, seg.c, seg.lo));
+            Int hi = cross(dir, point_on(seg.orientation, seg.c, seg.hi));
+            if (hi < lo) std::swap(lo, hi);
+            ranges.push_back({lo, hi, static_cast<std::uint32_t>(i)});
+        }
+        s.crossing_lines[static_cast<std::size_t>(g)] = IntervalStabbing<Int>(ranges);
     }
     s.magnitude = octagonal_magnitude(scene);
     return s;
@@ -208,10 +224,9 @@ template <class Int>
 Shot<Int> OctagonalScene<Int>::shoot(const Point<Int>& q, int g, bool backwards) const {
     Point<Int> d = direction[static_cast<std::size_t>(g)];
     if (backwards) d = {Int(-d[0]), Int(-d[1])};
-    const auto& acts = acting[static_cast<std::size_t>(g)];
     Shot<Int> best;
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        if (!acts[i]) continue;
+    const Int line = cross(direction[static_cast<std::size_t>(g)], q);
+    crossing_lines[static_cast<std::size_t>(g)].stab(line, [&](std::uint32_t i) {
         const Segment<Int>& s = segments[i];
         // t = num / den where the ray meets the line; the position there,
         // times den, is base * den + num * along.
@@ -230,30 +245,32 @@ Shot<Int> OctagonalScene<Int>::shoot(const Point<Int>& q, int g, bool backwards)
             num = s.c - (q[1] + q[0]), den = d[1] + d[0], base = q[0], along = d[0];
             break;
         }
-        if (den == 0) continue;
+        if (den == 0) return;
         if (den < 0) num = -num, den = -den;
-        if (!(num > 0)) continue;
+        if (!(num > 0)) return;
         const Int at = Int(base * den + num * along);
-        if (at < Int(s.lo * den) || Int(s.hi * den) < at) continue;
-        if (best.found && !(Int(num * best.den) < Int(best.num * den))) continue;
+        if (at < Int(s.lo * den) || Int(s.hi * den) < at) return;
+        if (best.found && !(Int(num * best.den) < Int(best.num * den))) return;
         best.found = true;
         best.num = num;
         best.den = den;
         best.segment = i;
-    }
+    });
     return best;
 }
 
 template <class Int>
 std::vector<const Segment<Int>*> OctagonalScene<Int>::acting_at(const Point<Int>& q, int g) const {
     std::vector<const Segment<Int>*> out;
-    const auto& acts = acting[static_cast<std::size_t>(g)];
-    for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Int line = cross(direction[static_cast<std::size_t>(g)], q);
+    crossing_lines[static_cast<std::size_t>(g)].stab(line, [&](std::uint32_t i) {
         const Segment<Int>& s = segments[i];
-        if (!acts[i] || line_constant(s.orientation, q) != s.c) continue;
+        if (line_constant(s.orientation, q) != s.c) return;
         const Int& u = position(s.orientation, q);
         if (s.lo <= u && u <= s.hi) out.push_back(&s);
-    }
+    });
+    // In scene order, as a scan would give them.
+    std::sort(out.begin(), out.end());
     return out;
 }
 

@@ -14,6 +14,7 @@
 // homotheties.
 #pragma once
 
+#include "induction/interval_stabbing.hpp"
 #include "lattice/lattice_int.hpp"
 #include "orthoray/scene.hpp"
 
@@ -103,6 +104,9 @@ struct OctagonalScene {
     // acting[g][s]: segment s acts on a ray along direction g v.
     std::array<std::vector<std::uint8_t>, 8> acting;
     std::array<Point<Int>, 8> direction; // g v
+    // Per sheet, the acting segments by the range of cross(g v, p) over
+    // their points p: only those whose range holds the ray's value can meet it.
+    std::array<IntervalStabbing<Int>, 8> crossing_lines;
 
     Vector direction_vector(int g) const; // g v as scene numbers
     // w(q, g) = cross(v, g^-1 q): constant along the ray, translated by every
