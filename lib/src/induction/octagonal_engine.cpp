@@ -1,5 +1,6 @@
 #include "induction/octagonal_engine.hpp"
 
+#include "engine/reference_tracer.hpp"
 #include "induction/induction_engine.hpp"
 #include "induction/octagonal_exchange.hpp"
 #include "induction/rauzy_induction.hpp"
@@ -84,12 +85,7 @@ Answer solve_on(const Scene& scene, const SolveOptions& options) {
     BuildFailure failure;
     const std::optional<OctagonalLayout> layout =
         build_layout(s, first.x, first.sheet, cap_of(scene), failure);
-    if (!layout)
-        throw UnsupportedScene(
-            failure == BuildFailure::not_injective
-                ? "the induction engine needs a step map that is one to one, and here two states "
-                  "step to one (a ray along a diagonal or an axis sliding into a vertex)"
-                : "the scene's interval exchange has more pieces than the induction engine allows");
+    if (!layout) return engine::solve_by_reference(scene, options);
 
     std::optional<Limit> limit;
     auto stop = [&](std::uint64_t) {
@@ -170,10 +166,7 @@ std::optional<IntervalExchange> exchange_on(const Scene& scene) {
                            layout->first, layout->hits);
 }
 
-void refuse_what_is_missing(const Scene& scene, const SolveOptions& options) {
-    if (scene.has_one_sided())
-        throw UnsupportedScene("the induction engine does not take one-sided elements in a scene "
-                               "with diagonal elements");
+void refuse_certificates(const SolveOptions& options) {
     if (options.path || options.induction_observer)
         throw UnsupportedScene("the induction engine writes no certificates for scenes with "
                                "diagonal elements yet (use --engine reference)");
@@ -182,7 +175,10 @@ void refuse_what_is_missing(const Scene& scene, const SolveOptions& options) {
 } // namespace
 
 Answer solve_octagonal(const Scene& scene, const SolveOptions& options) {
-    refuse_what_is_missing(scene, options);
+    refuse_certificates(options);
+    // A one-way mirror lets two states step to one: no bijection to induce
+    // on, and the orbit may enter its cycle after a tail (docs/optics.md).
+    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
     return fits_int128(scene) ? solve_on<int128_t>(scene, options)
                               : solve_on<Integer>(scene, options);
 }

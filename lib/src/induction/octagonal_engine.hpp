@@ -17,8 +17,8 @@ namespace orthoray::induction {
 // scene whose step map is not injective (a ray sliding along a diagonal
 // into a vertex, possible when the direction is axis-parallel or
 // diagonal), or whose exchange would exceed the piece cap, is answered by
-// the reference tracer instead (the answer's engine says so). One-sided
-// elements and certificates are refused (UnsupportedScene).
+// the reference tracer instead (the answer's engine says so), and so is
+// one with one-sided elements. Certificates are refused (UnsupportedScene).
 Answer solve_octagonal(const Scene& scene, const SolveOptions& options);
 
 // The exchange (on the cover) solve_octagonal would induce; nothing when
