@@ -1,7 +1,8 @@
 // octagonal_induction_bench: the induction engine on octagonal mazes
 // (docs/induction.md, section 6) for bench/RESULTS.md, and the search for
 // exchanges on which Rauzy-Zorich induction takes many steps against
-// k log2 N (issue 14, item 4). Not a test. Run: build/bench/octagonal_induction_bench
+// k log2 N (issue 14, item 4). Not a test. Run:
+// build/bench/octagonal_induction_bench [--quick | --climb ROUNDS]
 #include <orthoray/orthoray.hpp>
 
 #include <algorithm>
@@ -149,7 +150,7 @@ double ratio_of(const IntervalExchange& e) {
 
 // Random exchanges of k pieces of up to 2^bits states, and a hill climb
 // that mutates lengths and the image order of the worst one found.
-void step_bound_search(std::mt19937_64& rng) {
+void step_bound_search(std::mt19937_64& rng, int climb) {
     std::printf("\n# steps / (k log2 N): random exchanges, then a hill climb from the worst\n");
     std::printf("%4s %5s %9s %9s %9s %9s\n", "k", "bits", "median", "max", "climbed", "samples");
     for (int k : {3, 4, 6, 8, 16, 64, 256}) {
@@ -177,7 +178,7 @@ void step_bound_search(std::mt19937_64& rng) {
             // Hill climb: change one length (or swap two images), keep it if
             // the ratio does not drop.
             double climbed = worst;
-            const int rounds = k <= 16 ? 3000 : 300;
+            const int rounds = k <= 16 ? climb : climb / 10;
             for (int i = 0; i < rounds; ++i) {
                 auto lengths = worst_lengths;
                 auto order = worst_order;
@@ -221,7 +222,10 @@ void step_bound_search(std::mt19937_64& rng) {
 } // namespace
 
 int main(int argc, char** argv) {
+    // --quick: one run of each family; --climb R: R hill-climb rounds per
+    // small k (default 3,000).
     const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+    const int climb = argc > 2 && std::string(argv[1]) == "--climb" ? std::stoi(argv[2]) : 3000;
     const int repeats = quick ? 1 : 5;
     std::printf("%-34s %-8s %24s %8s %6s %9s %6s %9s\n", "family", "reason", "reflections",
                 "pieces", "log2N", "steps", "ratio", "seconds");
@@ -248,5 +252,5 @@ int main(int argc, char** argv) {
         std::printf("  n=%d: median %.3f s, max %.3f s\n", n, times[times.size() / 2],
                     times.back());
     }
-    if (!quick) step_bound_search(rng);
+    if (!quick) step_bound_search(rng, climb);
 }

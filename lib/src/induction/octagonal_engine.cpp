@@ -155,6 +155,17 @@ Answer solve_on(const Scene& scene, const SolveOptions& options) {
 }
 
 template <class Int>
+std::optional<std::size_t> dump_on(const Scene& scene, std::ostream& out) {
+    const OctagonalScene<Int> s = make_octagonal<Int>(scene);
+    const FirstSegment<Int> first = first_segment(s);
+    if (!first.reflects) return std::nullopt;
+    BuildFailure failure;
+    const auto layout = build_layout(s, first.x, first.sheet, ~std::size_t{0}, failure, &out);
+    if (!layout) return std::nullopt;
+    return layout->pieces.size();
+}
+
+template <class Int>
 std::optional<IntervalExchange> exchange_on(const Scene& scene) {
     const OctagonalScene<Int> s = make_octagonal<Int>(scene);
     const FirstSegment<Int> first = first_segment(s);
@@ -188,6 +199,11 @@ std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene) {
         throw UnsupportedScene("the interval exchange of a scene with diagonal elements does not "
                                "take one-sided elements");
     return fits_int128(scene) ? exchange_on<int128_t>(scene) : exchange_on<Integer>(scene);
+}
+
+std::optional<std::size_t> write_octagonal_pieces(const Scene& scene, std::ostream& out) {
+    if (scene.has_one_sided()) return std::nullopt;
+    return fits_int128(scene) ? dump_on<int128_t>(scene, out) : dump_on<Integer>(scene, out);
 }
 
 } // namespace orthoray::induction

@@ -10,6 +10,7 @@
 #include "orthoray/solve.hpp"
 
 #include <optional>
+#include <ostream>
 
 namespace orthoray::induction {
 
@@ -25,5 +26,11 @@ Answer solve_octagonal(const Scene& scene, const SolveOptions& options);
 // the ray meets nothing before, or at, its first event or when the exchange
 // cannot be built (see above).
 std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene);
+
+// Writes the first-return map on the cover (`orthoray pieces`): its
+// transversals and raw pieces, on the class of the orbit of the state after
+// reflection 1. Returns the number of pieces, nothing when there is no
+// reflection or no bijection.
+std::optional<std::size_t> write_octagonal_pieces(const Scene& scene, std::ostream& out);
 
 } // namespace orthoray::induction

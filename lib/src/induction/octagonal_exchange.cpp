@@ -31,6 +31,8 @@ public:
 
     std::optional<OctagonalLayout> build(const Point<Int>& x, int x_sheet, std::size_t max_pieces,
                                          BuildFailure& failure);
+    void dump(std::ostream& out) const;
+    std::vector<RawPiece>& pieces() { return pieces_; }
 
 private:
     struct Line {
@@ -422,18 +424,64 @@ std::optional<OctagonalLayout> Builder<Int>::build(const Point<Int>& x, int x_sh
 } // namespace
 
 template <class Int>
-std::optional<OctagonalLayout> build_layout(const OctagonalScene<Int>& scene,
-                                            const Point<Int>& first_point, int first_sheet,
-                                            std::size_t max_pieces, BuildFailure& failure) {
+void Builder<Int>::dump(std::ostream& out) const {
+    static const char* const line_name[] = {"x =", "y =", "y - x =", "y + x ="};
+    out << "# octagonal first-return map on the cover: " << pieces_.size() << " pieces on "
+        << slots_.size() << " transversals, " << size_ << " states\n"
+        << "# coordinates are scene ones times " << s_.scale << "; v = (" << to_integer(s_.a)
+        << ", " << to_integer(s_.b) << "); a state's w = cross(v, g^-1 q) is " << w_x_ << " modulo "
+        << modulus_ << "\n"
+        << "# transversal T: its states in order of increasing w, raw numbers START on\n";
+    for (std::size_t id = 0; id < slots_.size(); ++id) {
+        const Slot& t = slots_[id];
+        const Point<Int>& d = s_.direction[static_cast<std::size_t>(t.sheet)];
+        out << "transversal " << id << ": ";
+        if (t.vertex) {
+            const Point<Int>& v = vertices_[t.line];
+            out << "vertex (" << to_integer(v[0]) << ", " << to_integer(v[1]) << ")";
+        } else {
+            const Line& line = lines_[t.line];
+            out << "edge " << line_name[static_cast<int>(line.orientation)] << ' '
+                << to_integer(line.c) << ", "
+                << (line.orientation == Orientation::vertical ? "y" : "x") << " in ("
+                << to_integer(line.cuts[t.interval]) << ", "
+                << to_integer(line.cuts[t.interval + 1]) << ")";
+        }
+        out << ", sheet " << t.sheet << " leaving along (" << to_integer(d[0]) << ", "
+            << to_integer(d[1]) << "), w from " << t.first << ", " << t.count << " states, raw "
+            << t.start << "\n";
+    }
+    for (const RawPiece& p : pieces_) {
+        out << "piece " << p.start << " +" << p.length << ": ";
+        if (p.kind == PieceKind::escape)
+            out << "escape\n";
+        else if (p.kind == PieceKind::absorbed)
+            out << "absorbed\n";
+        else
+            out << "-> " << p.image << "\n";
+    }
+}
+
+template <class Int>
+std::optional<OctagonalLayout>
+build_layout(const OctagonalScene<Int>& scene, const Point<Int>& first_point, int first_sheet,
+             std::size_t max_pieces, BuildFailure& failure, std::ostream* dump) {
     Builder<Int> builder(scene, first_point, first_sheet);
-    return builder.build(first_point, first_sheet, max_pieces, failure);
+    if (!dump) return builder.build(first_point, first_sheet, max_pieces, failure);
+    auto layout = builder.build(first_point, first_sheet, max_pieces, failure);
+    if (layout) {
+        std::swap(builder.pieces(), layout->pieces);
+        builder.dump(*dump);
+        std::swap(builder.pieces(), layout->pieces);
+    }
+    return layout;
 }
 
 template std::optional<OctagonalLayout> build_layout(const OctagonalScene<int128_t>&,
                                                      const Point<int128_t>&, int, std::size_t,
-                                                     BuildFailure&);
+                                                     BuildFailure&, std::ostream*);
 template std::optional<OctagonalLayout> build_layout(const OctagonalScene<Integer>&,
                                                      const Point<Integer>&, int, std::size_t,
-                                                     BuildFailure&);
+                                                     BuildFailure&, std::ostream*);
 
 } // namespace orthoray::induction::octagonal

@@ -30,6 +30,7 @@
 #include "induction/octagonal_geometry.hpp"
 
 #include <optional>
+#include <ostream>
 #include <vector>
 
 namespace orthoray::induction::octagonal {
@@ -53,9 +54,11 @@ enum class BuildFailure {
 };
 
 // x = (first_point, first_sheet) is the lifted state after reflection 1.
+// With `dump`, the transversals and the raw pieces are written there too
+// (`orthoray pieces` on a diagonal scene).
 template <class Int>
-std::optional<OctagonalLayout> build_layout(const OctagonalScene<Int>& scene,
-                                            const Point<Int>& first_point, int first_sheet,
-                                            std::size_t max_pieces, BuildFailure& failure);
+std::optional<OctagonalLayout>
+build_layout(const OctagonalScene<Int>& scene, const Point<Int>& first_point, int first_sheet,
+             std::size_t max_pieces, BuildFailure& failure, std::ostream* dump = nullptr);
 
 } // namespace orthoray::induction::octagonal
