@@ -429,8 +429,8 @@ void Builder<Int>::dump(std::ostream& out) const {
     out << "# octagonal first-return map on the cover: " << pieces_.size() << " pieces on "
         << slots_.size() << " transversals, " << size_ << " states\n"
         << "# coordinates are scene ones times " << s_.scale << "; v = (" << to_integer(s_.a)
-        << ", " << to_integer(s_.b) << "); a state's w = cross(v, g^-1 q) is " << w_x_ << " modulo "
-        << modulus_ << "\n"
+        << ", " << to_integer(s_.b) << "); a state's w = cross(v, g^-1 q) is "
+        << (modulus_ == 0 ? w_x_ : floor_mod(w_x_, modulus_)) << " modulo " << modulus_ << "\n"
         << "# transversal T: its states in order of increasing w, raw numbers START on\n";
     for (std::size_t id = 0; id < slots_.size(); ++id) {
         const Slot& t = slots_[id];
