@@ -43,13 +43,30 @@ Run timed(const Scene& scene, int repeats) {
     return run;
 }
 
-void report(const std::string& name, const Run& run) {
+// The reference tracer on the same scene, when its answer is short enough
+// to wait for: the baseline of the same run.
+std::string baseline(const Scene& scene, const Answer& induced) {
+    if (induced.reflections > 200'000) return "";
+    SolveOptions o;
+    o.engine = Engine::reference;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Answer a = solve(scene, o);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    char text[64];
+    std::snprintf(text, sizeof text, " ref %.4f s%s", s,
+                  a.reason == induced.reason && a.reflections == induced.reflections ? ""
+                                                                                     : " DIFFERS");
+    return text;
+}
+
+void report(const std::string& name, const Run& run, const std::string& extra = "") {
     const auto& st = run.answer.stats.induction;
     const double klogn = static_cast<double>(st.pieces) * log2_of(st.states);
-    std::printf("%-34s %-8s %24s %8zu %6.0f %9llu %6.3f %9.4f\n", name.c_str(),
+    std::printf("%-34s %-8s %24s %8zu %6.0f %9llu %6.3f %9.4f%s\n", name.c_str(),
                 to_string(run.answer.reason), run.answer.reflections.get_str().c_str(), st.pieces,
                 log2_of(st.states), static_cast<unsigned long long>(st.steps),
-                klogn > 0 ? static_cast<double>(st.steps) / klogn : 0.0, run.seconds);
+                klogn > 0 ? static_cast<double>(st.steps) / klogn : 0.0, run.seconds,
+                extra.c_str());
 }
 
 Scene diamond(const Rational& n, const Integer& m) {
@@ -92,14 +109,15 @@ Scene octagon(const Rational& w, const Rational& h, const Rational& c, const Vec
     return s;
 }
 
-// n random axis and diagonal mirrors (one in 20 an absorber) of length up
+// n random axis and diagonal mirrors (some absorbers) of length up
 // to 2% of a 10^18 box with mirror walls; direction (3, 7).
-Scene random_maze(int n, std::mt19937_64& rng) {
+Scene random_maze(int n, int absorber_percent, std::mt19937_64& rng) {
     const std::int64_t b = 1'000'000'000'000'000'000;
     auto r = [&] { return Rational(Integer(std::to_string(uniform(rng, 0, b)))); };
     Scene s;
     for (int i = 0; i < n; ++i) {
-        const auto kind = uniform(rng, 1, 20) == 1 ? ElementKind::absorber : ElementKind::mirror;
+        const auto kind =
+            uniform(rng, 1, 100) <= absorber_percent ? ElementKind::absorber : ElementKind::mirror;
         const Rational lo = r(), len = Rational(Integer(std::to_string(uniform(rng, 1, b / 50))));
         const auto t = uniform(rng, 0, 3);
         if (t < 2) {
@@ -230,27 +248,32 @@ int main(int argc, char** argv) {
     std::printf("%-34s %-8s %24s %8s %6s %9s %6s %9s\n", "family", "reason", "reflections",
                 "pieces", "log2N", "steps", "ratio", "seconds");
     const Rational big(Integer("1000000000000000000"));
+    auto family = [&](const std::string& name, const Scene& scene) {
+        const Run run = timed(scene, repeats);
+        report(name, run, baseline(scene, run.answer));
+    };
     for (const char* m : {"1001", "1000000001", "1000000000000000001"}) {
-        report(std::string("diamond 1e18, (1, ") + m + ")",
-               timed(diamond(big, Integer(m)), repeats));
-        report(std::string("triangle 1e18, (1, ") + m + ")",
-               timed(triangle(big, Integer(m)), repeats));
+        family(std::string("diamond 1e18, (1, ") + m + ")", diamond(big, Integer(m)));
+        family(std::string("triangle 1e18, (1, ") + m + ")", triangle(big, Integer(m)));
     }
     const Rational w(Integer("1000000000000000003")), h(Integer("999999999999999989"));
     for (const Vector& d : {Vector{3, 7, 0}, Vector{1, 1000000001, 0}, Vector{1, 1, 0}})
-        report("octagon ~1e18, (" + d[0].get_str() + ", " + d[1].get_str() + ")",
-               timed(octagon(w, h, Rational(Integer("123456789012345678")), d), repeats));
+        family("octagon ~1e18, (" + d[0].get_str() + ", " + d[1].get_str() + ")",
+               octagon(w, h, Rational(Integer("123456789012345678")), d));
     std::mt19937_64 rng(14'004);
-    for (int n : {100, 300, 1000}) {
-        std::vector<double> times;
-        for (int seed = 0; seed < (quick ? 1 : 5); ++seed) {
-            const Run run = timed(random_maze(n, rng), 1);
-            report("random maze n=" + std::to_string(n), run);
-            times.push_back(run.seconds);
+    for (int absorbers : {5, 0})
+        for (int n : {100, 300, 1000}) {
+            std::vector<double> times;
+            for (int seed = 0; seed < (quick ? 1 : 5); ++seed) {
+                const Scene scene = random_maze(n, absorbers, rng);
+                const Run run = timed(scene, 1);
+                report("maze n=" + std::to_string(n) + " abs " + std::to_string(absorbers) + "%",
+                       run, baseline(scene, run.answer));
+                times.push_back(run.seconds);
+            }
+            std::sort(times.begin(), times.end());
+            std::printf("  n=%d, %d%% absorbers: median %.3f s, max %.3f s\n", n, absorbers,
+                        times[times.size() / 2], times.back());
         }
-        std::sort(times.begin(), times.end());
-        std::printf("  n=%d: median %.3f s, max %.3f s\n", n, times[times.size() / 2],
-                    times.back());
-    }
     if (!quick) step_bound_search(rng, climb);
 }
