@@ -121,7 +121,7 @@ TEST_CASE("right isosceles triangle: 2|a| + 2|b| + |a + b| + |a - b| reflections
 }
 
 TEST_CASE("induction agrees with the reference tracer on random octagonal trajectories",
-          "[octagonal][induction][property]") {
+          "[octagonal][induction][property][slow]") {
     // Answer, reason, reflections and period; the scenes whose step map is
     // not one to one (or that have one-sided elements) go to the reference
     // tracer, and must say so.
