@@ -72,7 +72,8 @@ struct IntervalExchange {
 // scene with diagonal elements it is the exchange on the eight-sheeted
 // cover (docs/induction.md, section 6), any direction allowed, with no
 // `transversals` or `scale` (its states are lifted states, not lattice
-// points); nothing when two states step to one there.
+// points); nothing when two states step to one there, or when the scene
+// has one-sided elements.
 std::optional<IntervalExchange> exchange_of(const Scene& scene);
 
 // Sees an induction: the exchange, then every step in the words of
