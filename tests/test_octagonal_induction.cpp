@@ -211,3 +211,17 @@ TEST_CASE("the octagonal exchange is a bijection of its states", "[octagonal][in
     }
     CHECK(checked > cases / 4);
 }
+
+TEST_CASE("induction runs on diagonal scenes write no certificate yet, and say so",
+          "[octagonal][induction]") {
+    // Refused (UnsupportedScene: the command line's exit 2) rather than a
+    // certificate the verifier could not read.
+    Scene s = diamond(1000);
+    shoot(s, Rational(1, 2), Rational(1, 2), 1, 2);
+    struct Watcher : InductionObserver {
+    } watcher;
+    SolveOptions o;
+    o.engine = Engine::induction;
+    o.induction_observer = &watcher;
+    CHECK_THROWS_AS(solve(s, o), UnsupportedScene);
+}
