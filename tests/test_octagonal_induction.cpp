@@ -225,3 +225,44 @@ TEST_CASE("induction runs on diagonal scenes write no certificate yet, and say s
     o.induction_observer = &watcher;
     CHECK_THROWS_AS(solve(s, o), UnsupportedScene);
 }
+
+TEST_CASE("octagonal induction answers a scene scaled by 10^17 or 10^40 as the scene itself",
+          "[octagonal][induction]") {
+    // Motion commutes with homotheties: the same answer on 128-bit and on
+    // GMP integers, far from the small numbers of the random scenes.
+    std::mt19937_64 rng(14'303);
+    test::RandomOctagonalShape shape;
+    const int cases = test::case_count(400);
+    int compared = 0;
+    for (int i = 0; i < cases; ++i) {
+        const Scene s = test::random_octagonal_scene(rng, shape);
+        if (!s.single_trajectory() || !s.has_diagonal()) continue;
+        INFO("case " << i << "\n" << write_scene(s));
+        const Answer small = induce_scene(s);
+        for (const char* factor :
+             {"100000000000000003", "10000000000000000000000000000000000000007"}) {
+            const Rational f{Integer(factor)};
+            Scene big = s;
+            for (Element& e : big.elements)
+                for (int j = 0; j < 2; ++j) {
+                    e.lo[j] *= f;
+                    e.hi[j] *= f;
+                }
+            for (int j = 0; j < 2; ++j) {
+                big.ray().start[j] = big.ray().start[j] * f + 7; // and translated
+                big.target()[j] = big.target()[j] * f + 7;
+            }
+            for (Element& e : big.elements)
+                for (int j = 0; j < 2; ++j) {
+                    e.lo[j] += 7;
+                    e.hi[j] += 7;
+                }
+            const Answer a = induce_scene(big);
+            CHECK(a.reason == small.reason);
+            CHECK(a.reflections == small.reflections);
+            CHECK(a.engine == small.engine);
+        }
+        ++compared;
+    }
+    CHECK(compared > cases / 2);
+}
