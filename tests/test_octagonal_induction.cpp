@@ -142,6 +142,14 @@ TEST_CASE("induction agrees with the reference tracer on random octagonal trajec
         const Answer want = solve(s, reference);
         REQUIRE(want.decided());
         const Answer got = induce_scene(s);
+        if (i % 10 == 0) { // GMP throughout, as on huge scenes
+            SolveOptions wide;
+            wide.engine = Engine::induction;
+            wide.arithmetic = Arithmetic::wide;
+            const Answer on_gmp = solve(s, wide);
+            CHECK(on_gmp.reason == want.reason);
+            CHECK(on_gmp.reflections == want.reflections);
+        }
         CHECK(got.reason == want.reason);
         CHECK(got.reflections == want.reflections);
         CHECK(got.tail == want.tail);

@@ -190,8 +190,12 @@ Answer solve_octagonal(const Scene& scene, const SolveOptions& options) {
     // A one-way mirror lets two states step to one: no bijection to induce
     // on, and the orbit may enter its cycle after a tail (docs/optics.md).
     if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
-    return fits_int128(scene) ? solve_on<int128_t>(scene, options)
-                              : solve_on<Integer>(scene, options);
+    // The geometry runs on 128-bit integers when they cannot overflow (there
+    // is no 64-bit path: the scale factor alone often passes 2^63);
+    // Arithmetic::wide asks for GMP.
+    return options.arithmetic != Arithmetic::wide && fits_int128(scene)
+               ? solve_on<int128_t>(scene, options)
+               : solve_on<Integer>(scene, options);
 }
 
 std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene) {
