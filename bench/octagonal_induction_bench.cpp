@@ -217,6 +217,31 @@ void step_bound_search(std::mt19937_64& rng, int climb) {
                         worst, climbed, samples);
         }
     }
+    // The slowest family found: lengths growing geometrically by 1.618 from
+    // 2^bits, images in reversed order (the hyperelliptic permutation), x
+    // first. Its ratio grows with k: no constant bounds steps / (k log2 N).
+    std::printf("\n# geometric lengths (ratio 1.618 from 2^bits), images reversed\n");
+    std::printf("%5s %5s %7s %11s %7s %9s\n", "k", "bits", "log2N", "steps", "ratio", "seconds");
+    for (int k : {16, 64, 256, 1024})
+        for (int bits : {40, 2000, 8000}) {
+            std::vector<Integer> lengths(static_cast<std::size_t>(k), 1);
+            Integer f = Integer(1) << bits;
+            for (int i = 1; i < k; ++i) {
+                f = f * 1618 / 1000;
+                lengths[static_cast<std::size_t>(i)] = f + i % 3;
+            }
+            std::vector<std::size_t> order(static_cast<std::size_t>(k));
+            std::iota(order.begin(), order.end(), std::size_t{0});
+            std::reverse(order.begin(), order.end());
+            const IntervalExchange e = exchange_of_lengths(lengths, order);
+            const auto t0 = std::chrono::steady_clock::now();
+            const InducedOrbit orbit = induce(e);
+            const double s =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            std::printf("%5d %5d %7.0f %11llu %7.2f %9.3f\n", k, bits, log2_of(e.size),
+                        static_cast<unsigned long long>(orbit.steps),
+                        static_cast<double>(orbit.steps) / (k * log2_of(e.size)), s);
+        }
     // Rotations by a / N near the golden ratio: Euclid's worst case.
     Integer f0 = 1, f1 = 1;
     while (mpz_sizeinbase(f1.get_mpz_t(), 2) < 200) {
