@@ -82,11 +82,6 @@ Answer solve_on(const Scene& scene, const SolveOptions& options) {
         answer.arithmetic = lattice::arithmetic_used(Int{});
         return answer;
     }
-    BuildFailure failure;
-    const std::optional<OctagonalLayout> layout =
-        build_layout(s, first.x, first.sheet, cap_of(scene), failure);
-    if (!layout) return engine::solve_by_reference(scene, options);
-
     std::optional<Limit> limit;
     auto stop = [&](std::uint64_t) {
         if (!options.monitor) return false;
@@ -102,6 +97,11 @@ Answer solve_on(const Scene& scene, const SolveOptions& options) {
         answer.reflections = 1; // the first reflection was taken by a shot
         return answer;
     };
+    BuildFailure failure;
+    const std::optional<OctagonalLayout> layout = build_layout(
+        s, first.x, first.sheet, cap_of(scene), failure, nullptr, [&] { return stop(0); });
+    if (failure == BuildFailure::stopped) return limited(*limit);
+    if (!layout) return engine::solve_by_reference(scene, options);
     if (stop(0)) return limited(*limit);
     const IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {},
                                                       layout->pieces, layout->first, layout->hits);

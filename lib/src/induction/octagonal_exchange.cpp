@@ -31,7 +31,10 @@ public:
 
     std::optional<OctagonalLayout> build(const Point<Int>& x, int x_sheet, std::size_t max_pieces,
                                          BuildFailure& failure);
+    std::optional<OctagonalLayout> build_all(const Point<Int>& x, int x_sheet,
+                                             std::size_t max_pieces, BuildFailure& failure);
     void dump(std::ostream& out) const;
+    void set_stop(const std::function<bool()>& stop) { stop_ = stop; }
     std::vector<RawPiece>& pieces() { return pieces_; }
 
 private:
@@ -42,6 +45,12 @@ private:
         std::vector<std::uint8_t> mirror_only; // per interval between cuts
         std::vector<std::size_t> slot;         // interval * 8 + sheet -> slot or npos
     };
+
+    // Thrown by poll() when stop_ says so; build() turns it into a failure.
+    struct Stopped {};
+    void poll() {
+        if (stop_ && (++polls_ & 0xfff) == 0 && stop_()) throw Stopped{};
+    }
 
     bool in_class(const Integer& w) const {
         return modulus_ == 0 ? w == w_x_ : floor_mod(w - w_x_, modulus_) == 0;
@@ -74,6 +83,8 @@ private:
     std::vector<Slot> slots_;
     std::vector<std::size_t> vertex_slot_; // vertex * 8 + sheet -> slot or npos
     std::vector<RawPiece> pieces_;
+    std::function<bool()> stop_;
+    std::uint64_t polls_ = 0;
 };
 
 template <class Int>
@@ -104,6 +115,7 @@ template <class Int>
 void Builder<Int>::find_vertices() {
     const auto& segs = s_.segments;
     for (std::size_t i = 0; i < segs.size(); ++i) {
+        poll();
         vertices_.push_back(point_on(segs[i].orientation, segs[i].c, segs[i].lo));
         vertices_.push_back(point_on(segs[i].orientation, segs[i].c, segs[i].hi));
         for (std::size_t j = i + 1; j < segs.size(); ++j)
@@ -325,6 +337,18 @@ void Builder<Int>::add_run(std::size_t slot, const Integer& first, const Integer
 template <class Int>
 std::optional<OctagonalLayout> Builder<Int>::build(const Point<Int>& x, int x_sheet,
                                                    std::size_t max_pieces, BuildFailure& failure) {
+    try {
+        return build_all(x, x_sheet, max_pieces, failure);
+    } catch (const Stopped&) {
+        failure = BuildFailure::stopped;
+        return std::nullopt;
+    }
+}
+
+template <class Int>
+std::optional<OctagonalLayout> Builder<Int>::build_all(const Point<Int>& x, int x_sheet,
+                                                       std::size_t max_pieces,
+                                                       BuildFailure& failure) {
     failure = BuildFailure::none;
     find_vertices();
     cut_lines();
@@ -335,6 +359,7 @@ std::optional<OctagonalLayout> Builder<Int>::build(const Point<Int>& x, int x_sh
     std::vector<std::pair<std::size_t, Integer>> breaks;
     for (const Point<Int>& v : vertices_)
         for (int g = 0; g < 8; ++g) {
+            poll();
             const Shot<Int> back = s_.shoot(v, g, true);
             if (!back.found) continue;
             const Segment<Int>& seg = s_.segments[back.segment];
@@ -357,6 +382,7 @@ std::optional<OctagonalLayout> Builder<Int>::build(const Point<Int>& x, int x_sh
 
     std::size_t next_break = 0;
     for (std::size_t id = 0; id < slots_.size(); ++id) {
+        poll();
         const Slot& t = slots_[id];
         const Integer last_state =
             modulus_ == 0 ? t.first : Integer(t.first + (t.count - 1) * modulus_);
@@ -463,10 +489,12 @@ void Builder<Int>::dump(std::ostream& out) const {
 }
 
 template <class Int>
-std::optional<OctagonalLayout>
-build_layout(const OctagonalScene<Int>& scene, const Point<Int>& first_point, int first_sheet,
-             std::size_t max_pieces, BuildFailure& failure, std::ostream* dump) {
+std::optional<OctagonalLayout> build_layout(const OctagonalScene<Int>& scene,
+                                            const Point<Int>& first_point, int first_sheet,
+                                            std::size_t max_pieces, BuildFailure& failure,
+                                            std::ostream* dump, const std::function<bool()>& stop) {
     Builder<Int> builder(scene, first_point, first_sheet);
+    builder.set_stop(stop);
     if (!dump) return builder.build(first_point, first_sheet, max_pieces, failure);
     auto layout = builder.build(first_point, first_sheet, max_pieces, failure);
     if (layout) {
@@ -479,9 +507,11 @@ build_layout(const OctagonalScene<Int>& scene, const Point<Int>& first_point, in
 
 template std::optional<OctagonalLayout> build_layout(const OctagonalScene<int128_t>&,
                                                      const Point<int128_t>&, int, std::size_t,
-                                                     BuildFailure&, std::ostream*);
+                                                     BuildFailure&, std::ostream*,
+                                                     const std::function<bool()>&);
 template std::optional<OctagonalLayout> build_layout(const OctagonalScene<Integer>&,
                                                      const Point<Integer>&, int, std::size_t,
-                                                     BuildFailure&, std::ostream*);
+                                                     BuildFailure&, std::ostream*,
+                                                     const std::function<bool()>&);
 
 } // namespace orthoray::induction::octagonal

@@ -29,6 +29,7 @@
 #include "induction/exchange_builder.hpp"
 #include "induction/octagonal_geometry.hpp"
 
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <vector>
@@ -51,14 +52,17 @@ enum class BuildFailure {
     none,
     not_injective, // two states step to one (a ray sliding along a diagonal into a vertex)
     too_large,     // more pieces than `max_pieces`
+    stopped,       // `stop` said so (a time limit, a signal)
 };
 
 // x = (first_point, first_sheet) is the lifted state after reflection 1.
 // With `dump`, the transversals and the raw pieces are written there too
-// (`orthoray pieces` on a diagonal scene).
+// (`orthoray pieces` on a diagonal scene). `stop`, if set, is asked every
+// few thousand crossings and shots: the build is O(n^2) in the elements.
 template <class Int>
 std::optional<OctagonalLayout>
 build_layout(const OctagonalScene<Int>& scene, const Point<Int>& first_point, int first_sheet,
-             std::size_t max_pieces, BuildFailure& failure, std::ostream* dump = nullptr);
+             std::size_t max_pieces, BuildFailure& failure, std::ostream* dump = nullptr,
+             const std::function<bool()>& stop = {});
 
 } // namespace orthoray::induction::octagonal
