@@ -6,10 +6,12 @@
 #include "support/random_octagonal.hpp"
 
 #include "orthoray/exchange.hpp"
+#include "orthoray/pieces.hpp"
 #include "orthoray/solve.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <sstream>
 #include <string>
 
 using namespace orthoray;
@@ -273,4 +275,24 @@ TEST_CASE("octagonal induction answers a scene scaled by 10^17 or 10^40 as the s
         ++compared;
     }
     CHECK(compared > cases / 2);
+}
+
+TEST_CASE("the piece tables of a diagonal scene are the cover's first-return map",
+          "[octagonal][induction]") {
+    // `orthoray pieces`: one line a transversal and a piece, as many pieces
+    // as the exchange has before x and the marks are cut out.
+    Scene s = diamond(5);
+    shoot(s, 0, 0, 1, 2);
+    std::ostringstream out;
+    const PieceTableSummary summary = write_piece_tables(s, out);
+    CHECK(summary.available);
+    CHECK(summary.pieces > 0);
+    const std::string text = out.str();
+    std::size_t pieces = 0;
+    for (std::size_t at = text.find("\npiece "); at != std::string::npos;
+         at = text.find("\npiece ", at + 1))
+        ++pieces;
+    CHECK(pieces == summary.pieces);
+    CHECK(text.find("sheet") != std::string::npos);
+    CHECK(exchange_of(s)->pieces.size() >= summary.pieces);
 }
