@@ -6,7 +6,7 @@
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
-#include "induction/octagonal_engine.hpp"
+#include "induction/octagonal_induction.hpp"
 #include "orthoray/state_graph.hpp"
 
 #include <new>
@@ -76,7 +76,7 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     // single trajectory, the reference tracer, the state graph and the
     // induction engine follow them; the lattice engine does not yet.
     if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::induction)
-        return induction::solve_octagonal(scene, options);
+        return induction::solve_octagonal_by_induction(scene, options);
     if (scene.single_trajectory() && options.engine != Engine::reference &&
         options.engine != Engine::graph)
         refuse_diagonals(scene, "solve");

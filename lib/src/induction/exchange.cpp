@@ -4,7 +4,7 @@
 
 #include "induction/exchange_builder.hpp"
 #include "induction/induction_engine.hpp"
-#include "induction/octagonal_engine.hpp"
+#include "induction/octagonal_induction.hpp"
 #include "induction/rauzy_induction.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"

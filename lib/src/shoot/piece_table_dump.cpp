@@ -1,6 +1,6 @@
 #include "orthoray/pieces.hpp"
 
-#include "induction/octagonal_engine.hpp"
+#include "induction/octagonal_induction.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "shoot/piece_table.hpp"
 

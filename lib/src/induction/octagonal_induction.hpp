@@ -20,9 +20,9 @@ namespace orthoray::induction {
 // diagonal), or whose exchange would exceed the piece cap, is answered by
 // the reference tracer instead (the answer's engine says so), and so is
 // one with one-sided elements. Certificates are refused (UnsupportedScene).
-Answer solve_octagonal(const Scene& scene, const SolveOptions& options);
+Answer solve_octagonal_by_induction(const Scene& scene, const SolveOptions& options);
 
-// The exchange (on the cover) solve_octagonal would induce; nothing when
+// The exchange (on the cover) solve_octagonal_by_induction would induce; nothing when
 // the ray meets nothing before, or at, its first event or when the exchange
 // cannot be built (see above).
 std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene);

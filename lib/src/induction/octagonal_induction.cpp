@@ -1,4 +1,4 @@
-#include "induction/octagonal_engine.hpp"
+#include "induction/octagonal_induction.hpp"
 
 #include "engine/reference_tracer.hpp"
 #include "induction/induction_engine.hpp"
@@ -185,7 +185,7 @@ void refuse_certificates(const SolveOptions& options) {
 
 } // namespace
 
-Answer solve_octagonal(const Scene& scene, const SolveOptions& options) {
+Answer solve_octagonal_by_induction(const Scene& scene, const SolveOptions& options) {
     refuse_certificates(options);
     // A one-way mirror lets two states step to one: no bijection to induce
     // on, and the orbit may enter its cycle after a tail (docs/optics.md).
