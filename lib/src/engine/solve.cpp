@@ -6,6 +6,7 @@
 #include "engine/lattice_engine.hpp"
 #include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
+#include "induction/octagonal_induction.hpp"
 #include "orthoray/state_graph.hpp"
 
 #include <new>
@@ -72,8 +73,10 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
     // Diagonals (docs/octagonal.md): the illumination engines and, for a
-    // single trajectory, the reference tracer and the state graph follow
-    // them; the lattice and induction engines do not yet.
+    // single trajectory, the reference tracer, the state graph and the
+    // induction engine follow them; the lattice engine does not yet.
+    if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::induction)
+        return induction::solve_octagonal_by_induction(scene, options);
     if (scene.single_trajectory() && options.engine != Engine::reference &&
         options.engine != Engine::graph)
         refuse_diagonals(scene, "this engine (--engine reference or graph can solve it)");
