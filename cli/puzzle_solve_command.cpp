@@ -4,6 +4,8 @@
 #include "option_checks.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/puzzle.hpp"
+#include "orthoray/render.hpp"
+#include "orthoray/solve.hpp"
 #include "output_file.hpp"
 #include "run_monitor.hpp"
 
@@ -23,7 +25,7 @@ namespace orthoray::cli {
 namespace {
 
 struct PuzzleSolveArgs {
-    std::string level, out;
+    std::string level, out, picture;
     bool json = false, all = false;
     unsigned jobs = 0;
     double timeout = 0;
@@ -126,6 +128,20 @@ void print_text(const LazorSolution& s, const std::string& limit, double seconds
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
+// The solved level's scene as SVG: every branch of every laser (at most
+// 10^5 states), each point marked lit or not by the illumination engine,
+// as `orthoray render` draws scenes with splitters and several rays.
+void write_picture(const LazorLevel& solved, const PuzzleSolveArgs& args, OutputFile& out) {
+    const Scene scene = lazor_scene(solved);
+    SceneRenderer renderer(scene);
+    renderer.add_caption("solved " + args.level + ": " + std::to_string(solved.points.size()) +
+                         " points, " + std::to_string(scene.rays.size()) + " lasers");
+    walk_branches(scene, renderer, 100'000);
+    renderer.mark_targets(solve(scene).targets);
+    renderer.write_svg(out.stream());
+    out.commit();
+}
+
 int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
     const Clock::time_point begin = Clock::now();
     std::optional<Clock::time_point> deadline;
@@ -138,6 +154,10 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
     std::optional<OutputFile> out;
     if (!args.out.empty())
         out.emplace(args.out, std::vector<std::string>{args.level}, "the solved level");
+    std::optional<OutputFile> picture;
+    if (!args.picture.empty())
+        picture.emplace(args.picture, std::vector<std::string>{args.level, args.out},
+                        "the picture");
 
     std::atomic<bool> stop{false};
     LazorSolveOptions options;
@@ -164,6 +184,7 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
                                            "solved by orthoray puzzle solve: " + args.level);
         out->commit();
     }
+    if (picture && solution.placed) write_picture(*solution.placed, args, *picture);
     if (args.json)
         print_json(solution, limit, jobs, seconds);
     else
@@ -201,6 +222,9 @@ Command add_puzzle_solve(CLI::App& puzzle) {
         "solutions (with --all), nodes, jobs, seconds");
     cmd->add_option("-o,--output", args->out,
                     "write the solved level here (.bff, the blocks placed in its grid)");
+    cmd->add_option("--render", args->picture,
+                    "draw the solved level here (SVG): every laser's branches, each point "
+                    "gold when lit (as 'orthoray render' draws scenes)");
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
         ->check(CLI::Range(1u, 1024u));
     cmd->add_flag("--all", args->all,

@@ -10,6 +10,9 @@
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
+
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 using namespace orthoray;
@@ -186,6 +189,19 @@ TEST_CASE("puzzle solve and puzzle scene on the command line", "[puzzle][solve][
     r = run_cli("puzzle scene " + quote(level));
     CHECK(r.status == 0);
     CHECK(r.out.rfind("dim 2\nray 3/2 1/2 1 1\n", 0) == 0);
+
+    // --render: the solved level's branches, with its four points lit.
+    const std::string picture = dir.path("solved.svg");
+    r = run_cli("puzzle solve " + quote(level) + " --render " + quote(picture));
+    CHECK(r.status == 0);
+    std::ifstream svg_file(picture);
+    const std::string svg((std::istreambuf_iterator<char>(svg_file)), {});
+    CHECK(svg.find("<svg ") != std::string::npos);
+    std::size_t lit = 0;
+    for (std::size_t at = svg.find("<circle class=\"target-lit\""); at != std::string::npos;
+         at = svg.find("<circle class=\"target-lit\"", at + 1))
+        ++lit;
+    CHECK(lit == 4);
 
     r = run_cli("puzzle solve --json --all --jobs 2 " + quote(level));
     CHECK(r.status == 0);
