@@ -4,6 +4,7 @@
 #include "engine/cycle_detector.hpp"
 #include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
+#include "engine/octagonal_engine.hpp"
 #include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
 #include "orthoray/state_graph.hpp"
@@ -70,7 +71,11 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    refuse_diagonals(scene, "solve");
+    // Diagonals (docs/octagonal.md): a single trajectory on the lattice
+    // engine (automatic or lattice); the others refuse them so far.
+    if (!scene.single_trajectory() ||
+        (options.engine != Engine::automatic && options.engine != Engine::lattice))
+        refuse_diagonals(scene, "solve");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided
@@ -102,6 +107,7 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     case Engine::induction:
         break;
     }
+    if (scene.has_diagonal()) return engine::solve_octagonal(scene, options);
     return engine::solve_on_lattice(scene, options);
 }
 
