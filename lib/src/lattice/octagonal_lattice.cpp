@@ -127,6 +127,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene) {
         take(e.lo);
         take(e.hi);
     }
+    out.modulus = N;
     out.scale = N * D;
 
     Integer largest = 0;

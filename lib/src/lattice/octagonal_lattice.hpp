@@ -53,7 +53,8 @@ struct OctagonalElement {
 };
 
 struct OctagonalLattice {
-    Integer scale; // N * D: lattice coordinates are scene coordinates times this
+    Integer scale;   // N * D: lattice coordinates are scene coordinates times this
+    Integer modulus; // N: cross(w, P) of every state (P, w) is a multiple of it
     std::array<std::array<Integer, 2>, direction_count> w; // each direction in lattice units
     std::array<std::uint8_t, direction_count> canonical;   // least index naming the same vector
     unsigned distinct_directions = 0;                      // 8, or 4 when u is symmetric
