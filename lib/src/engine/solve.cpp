@@ -38,8 +38,9 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     answer = report->answer;
     if (answer.decided() && options.max_steps) {
         Integer needed = answer.reflections + (answer.reason == Reason::cycle ? 1 : 0);
-        // With one-sided elements the simulations run Brent's detector.
-        if (answer.reason == Reason::cycle && scene.has_one_sided())
+        // With one-sided elements or diagonals the simulations run Brent's
+        // detector.
+        if (answer.reason == Reason::cycle && engine::may_have_tail(scene))
             needed = Integer(static_cast<unsigned long>(
                 engine::brent_detection(answer.tail.get_ui() + 1, answer.period().get_ui())));
         Integer cap = Integer(static_cast<unsigned long>(*options.max_steps));
@@ -71,11 +72,10 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // Diagonals (docs/octagonal.md): a single trajectory on the lattice
-    // engine (automatic or lattice); the others refuse them so far.
-    if (!scene.single_trajectory() ||
-        (options.engine != Engine::automatic && options.engine != Engine::lattice))
-        refuse_diagonals(scene, "solve");
+    // Diagonals (docs/octagonal.md): the illumination engines follow them,
+    // and for a single trajectory every engine but induction.
+    if (scene.single_trajectory() && options.engine == Engine::induction)
+        refuse_diagonals(scene, "--engine induction");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided
