@@ -4,10 +4,14 @@
 // corner of a diagonal and a wall, a rho cycle through a one-way mirror),
 // the shooters that refuse diagonals, and agreement with the reference
 // tracer on random octagonal scenes.
+#include "engine/reference_tracer.hpp"
 #include "lattice/octagonal_lattice.hpp"
-#include "orthoray/certificate.hpp"
+#include "orthoray/bounds.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "support/case_count.hpp"
+#include "support/portable_random.hpp"
+#include "support/random_octagonal.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -165,6 +169,9 @@ TEST_CASE("octagonal lattice: one-way mirrors and a diagonal make a rho cycle wi
     CHECK(a.tail == 1);
     CHECK(a.period() == 4);
     CHECK(a.reflections == 5);
+    const Answer want = engine::solve_by_reference(s, SolveOptions{});
+    CHECK(want.tail == a.tail);
+    CHECK(want.reflections == a.reflections);
 }
 
 TEST_CASE("octagonal lattice: grid, piece tables and cross-section grid refuse diagonals",
@@ -181,4 +188,161 @@ TEST_CASE("octagonal lattice: grid, piece tables and cross-section grid refuse d
     SolveOptions induction;
     induction.engine = Engine::induction;
     CHECK_THROWS_AS(solve(s, induction), UnsupportedScene);
+}
+
+TEST_CASE("octagonal lattice: agrees with the reference tracer on random octagonal scenes",
+          "[octagonal][lattice][property]") {
+    std::mt19937_64 rng(1401);
+    test::RandomOctagonalShape shape;
+    shape.one_sided_percent = 30;
+    const Arithmetic arithmetics[] = {Arithmetic::automatic, Arithmetic::int128, Arithmetic::wide};
+    const int cases = test::case_count(6000);
+    int compared = 0, tails = 0, limits = 0, cycles = 0, hits = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.box = test::pick(rng, 2, 6);
+        shape.max_elements = test::pick(rng, 1, 12);
+        const Scene s = test::random_octagonal_scene(rng, shape);
+        if (!s.has_diagonal()) continue;
+        INFO("case " << i << "\n" << write_scene(s));
+        SolveOptions reference;
+        reference.engine = Engine::reference;
+        // Now and then a cap: both run Brent's detector on the same states.
+        if (test::chance(rng, 15))
+            reference.max_steps = static_cast<std::uint64_t>(test::pick(rng, 0, 30));
+        const Answer want = engine::solve_by_reference(s, reference);
+        SolveOptions options;
+        options.max_steps = reference.max_steps;
+        options.arithmetic = arithmetics[test::pick(rng, 0, 2)];
+        if (test::chance(rng, 50)) options.engine = Engine::lattice;
+        const Answer got = solve(s, options);
+        ++compared;
+        tails += want.tail > 0;
+        limits += !want.decided();
+        cycles += want.reason == Reason::cycle;
+        hits += want.reason == Reason::hit;
+        CHECK(got.engine == EngineUsed::lattice);
+        CHECK(got.reason == want.reason);
+        CHECK(got.reflections == want.reflections);
+        CHECK(got.tail == want.tail);
+        CHECK(got.period() == want.period());
+    }
+    CHECK(compared >= cases * 8 / 10);
+    CHECK(tails > 0);
+    CHECK(limits > 0);
+    CHECK(cycles > cases / 10);
+    CHECK(hits > cases / 10);
+}
+
+namespace {
+
+// The integer points of the octagonal lattice on the elements, one by one
+// over the elements' bounding box (machine integers: small scenes only), and
+// the states among them keeping the line invariant.
+std::pair<Integer, Integer> enumerate_states(const lattice::OctagonalLattice& l) {
+    auto value = [](const Integer& x) { return x.get_si(); };
+    long lo[2] = {value(l.elements[0].lo[0]), value(l.elements[0].lo[1])};
+    long hi[2] = {value(l.elements[0].hi[0]), value(l.elements[0].hi[1])};
+    for (const lattice::OctagonalElement& e : l.elements)
+        for (int j = 0; j < 2; ++j) {
+            lo[j] = std::min(lo[j], value(e.lo[j]));
+            hi[j] = std::max(hi[j], value(e.hi[j]));
+        }
+    const long N = value(l.modulus);
+    Integer points = 0, refined = 0;
+    for (long x = lo[0]; x <= hi[0]; ++x)
+        for (long y = lo[1]; y <= hi[1]; ++y) {
+            bool on = false;
+            for (const lattice::OctagonalElement& e : l.elements) {
+                if (x < value(e.lo[0]) || value(e.hi[0]) < x || y < value(e.lo[1]) ||
+                    value(e.hi[1]) < y)
+                    continue;
+                // In its box, a diagonal's points are those on its line.
+                const long k = value(e.offset);
+                on = on || (e.orientation == lattice::rising    ? x - y == k
+                            : e.orientation == lattice::falling ? x + y == k
+                                                                : true);
+            }
+            if (!on) continue;
+            ++points;
+            for (unsigned d = 0; d < lattice::direction_count; ++d)
+                if (l.canonical[d] == d && (value(l.w[d][0]) * y - value(l.w[d][1]) * x) % N == 0)
+                    ++refined;
+        }
+    return {points, refined};
+}
+
+} // namespace
+
+TEST_CASE("octagonal bounds: exact point counts, states visited within them",
+          "[octagonal][bounds][property]") {
+    // The box of the '/' and '\' above, at scale 2: 32 wall points, 5 on
+    // each diagonal, minus the three diagonal ends on walls and the crossing
+    // (3, 1); the ray along x takes 4 directions.
+    const StateBounds box = compute_bounds(
+        read_scene("dim 2\nmirror x 0 y 0 4\nmirror x 4 y 0 4\nmirror y 0 x 0 4\nmirror y 4 x 0 4\n"
+                   "mirror / 1 0 3 2\nmirror \\ 0 2 2 0\nray 1/2 1 1 0\ntarget 9 9\n"));
+    CHECK(box.octagonal);
+    CHECK(box.points == 38);
+    CHECK(box.directions == 4);
+    CHECK(box.lattice_states == 152);
+    CHECK(box.refined_states == 152); // N = 1: every state keeps it
+    CHECK_FALSE(box.pieces);
+
+    std::mt19937_64 rng(1402);
+    test::RandomOctagonalShape shape;
+    shape.one_sided_percent = 20;
+    const int cases = test::case_count(600);
+    int enumerated = 0, refined_below = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.box = test::pick(rng, 2, 4);
+        const Scene s = test::random_octagonal_scene(rng, shape);
+        if (!s.has_diagonal()) continue;
+        INFO("case " << i << "\n" << write_scene(s));
+        const StateBounds b = compute_bounds(s);
+        CHECK(b.refined_states <= b.lattice_states);
+        refined_below += b.refined_states < b.lattice_states;
+        const lattice::OctagonalLattice l = lattice::make_octagonal_lattice(s);
+        if (l.scale <= 12) { // the counts, against enumeration
+            const auto [points, refined] = enumerate_states(l);
+            CHECK(b.points == points);
+            CHECK(b.refined_states == refined);
+            ++enumerated;
+        }
+        // Every state of the trajectory keeps the line invariant, and the
+        // states visited stay within the refined bound.
+        PathRecorder path;
+        SolveOptions options;
+        options.path = &path;
+        options.max_steps = 2000;
+        const Answer a = solve(s, options);
+        for (std::size_t k = 1; k < path.points.size(); ++k) {
+            const Integer x = Rational(path.points[k][0] * l.scale).get_num();
+            const Integer y = Rational(path.points[k][1] * l.scale).get_num();
+            const Vector& v = path.directions[k];
+            bool keeps = false;
+            for (unsigned d = 0; d < lattice::direction_count; ++d)
+                if (l.direction(d) == v) keeps = (l.w[d][0] * y - l.w[d][1] * x) % l.modulus == 0;
+            CHECK(keeps);
+        }
+        if (const std::optional<Integer> visited = states_visited(a))
+            CHECK(*visited <= b.refined_states);
+    }
+    CHECK(enumerated > cases / 2);
+    CHECK(refined_below > cases / 10);
+}
+
+TEST_CASE("bounds of several rays: each ray's own lattice, summed", "[octagonal][bounds]") {
+    const std::string walls = "dim 2\nmirror x 0 y 0 3\nmirror x 5 y 0 3\nmirror y 0 x 0 5\n"
+                              "mirror y 3 x 0 5\ntarget 1 1\n";
+    const Scene first = read_scene(walls + "ray 0 0 1 1\n");
+    const Scene second = read_scene(walls + "ray 1/2 0 1 2\n");
+    const Scene both = read_scene(walls + "ray 0 0 1 1\nray 1/2 0 1 2\n");
+    const StateBounds a = compute_bounds(first), b = compute_bounds(second),
+                      sum = compute_bounds(both);
+    CHECK(sum.rays == 2);
+    CHECK(sum.points == a.points + b.points);
+    CHECK(sum.lattice_states == a.lattice_states + b.lattice_states);
+    CHECK(sum.refined_states == a.refined_states + b.refined_states);
+    CHECK(sum.scale == a.scale); // the first ray's lattice describes the rest
+    CHECK(b.lattice_states != a.lattice_states);
 }
