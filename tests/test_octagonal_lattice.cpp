@@ -7,6 +7,7 @@
 #include "engine/reference_tracer.hpp"
 #include "lattice/octagonal_lattice.hpp"
 #include "orthoray/bounds.hpp"
+#include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
 #include "support/case_count.hpp"
@@ -345,4 +346,39 @@ TEST_CASE("bounds of several rays: each ray's own lattice, summed", "[octagonal]
     CHECK(sum.refined_states == a.refined_states + b.refined_states);
     CHECK(sum.scale == a.scale); // the first ray's lattice describes the rest
     CHECK(b.lattice_states != a.lattice_states);
+}
+
+TEST_CASE("octagonal lattice: its certificates are the reference tracer's, byte for byte",
+          "[octagonal][lattice][certificate]") {
+    // Until the verifier reads diagonals, the lattice engine's path is held
+    // to the reference tracer's: the same points, directions, cycle start
+    // and verdict, in both formats, capped runs included.
+    std::mt19937_64 rng(1403);
+    test::RandomOctagonalShape shape;
+    shape.one_sided_percent = 30;
+    int compared = 0;
+    for (int i = 0; i < test::case_count(400); ++i) {
+        const Scene s = test::random_octagonal_scene(rng, shape);
+        if (!s.has_diagonal()) continue;
+        INFO("case " << i << "\n" << write_scene(s));
+        const CertificateFormat format =
+            i % 2 == 0 ? CertificateFormat::text : CertificateFormat::jsonl;
+        const std::optional<std::uint64_t> cap =
+            test::chance(rng, 20) ? std::optional<std::uint64_t>(test::pick(rng, 0, 20))
+                                  : std::nullopt;
+        std::string text[2];
+        for (int k = 0; k < 2; ++k) {
+            std::ostringstream out;
+            CertificateWriter writer(out, s, format);
+            SolveOptions options;
+            options.engine = k == 0 ? Engine::lattice : Engine::reference;
+            options.max_steps = cap;
+            writer.attach(options);
+            writer.finish(solve(s, options));
+            text[k] = out.str();
+        }
+        CHECK(text[0] == text[1]);
+        ++compared;
+    }
+    CHECK(compared > test::case_count(400) * 8 / 10);
 }
