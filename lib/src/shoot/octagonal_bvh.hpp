@@ -85,20 +85,28 @@ private:
     std::uint32_t build(std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
                         const std::vector<Item>& items);
 
-    // [enter, leave] in scaled time; false when an axis the ray does not
-    // move on misses the box.
-    bool slab(const Node& node, const Int (&p)[2], unsigned d, Int& enter, Int& leave) const {
+    // Per direction and axis, what the slab test needs: whether the ray
+    // moves on the axis, towards -infinity, and the factor turning a
+    // coordinate difference into scaled time (|w_other|, or 1).
+    struct Slab {
+        bool moving[2], negative[2];
+        Int factor[2];
+    };
+    Slab slab_[lattice::direction_count];
+
+    // [enter, leave] in scaled time; false when the box cannot hold a hit
+    // (an axis the ray does not move on misses it, or it lies behind).
+    bool slab(const Node& node, const Int (&p)[2], const Slab& s, Int& enter, Int& leave) const {
         bool first = true;
         for (int j = 0; j < 2; ++j) {
-            const Int& wj = w_[d][j];
-            if (wj == 0) {
+            if (!s.moving[j]) {
                 if (p[j] < node.lo[j] || node.hi[j] < p[j]) return false;
                 continue;
             }
-            const Int& other = w_[d][1 - j];
-            const Int m = other == 0 ? Int(1) : Int(other < 0 ? Int(-other) : other);
-            Int a = wj > 0 ? Int((node.lo[j] - p[j]) * m) : Int((p[j] - node.hi[j]) * m);
-            Int b = wj > 0 ? Int((node.hi[j] - p[j]) * m) : Int((p[j] - node.lo[j]) * m);
+            const Int a = s.negative[j] ? Int((p[j] - node.hi[j]) * s.factor[j])
+                                        : Int((node.lo[j] - p[j]) * s.factor[j]);
+            const Int b = s.negative[j] ? Int((p[j] - node.lo[j]) * s.factor[j])
+                                        : Int((node.hi[j] - p[j]) * s.factor[j]);
             if (first || enter < a) enter = a;
             if (first || b < leave) leave = b;
             first = false;
@@ -118,6 +126,12 @@ OctagonalBvh<Int>::OctagonalBvh(const lattice::OctagonalLattice& lattice) {
         step_[d][lattice::normal_y] = y;
         step_[d][lattice::rising] = x - y;
         step_[d][lattice::falling] = x + y;
+        for (int j = 0; j < 2; ++j) {
+            const Int& other = w_[d][1 - j];
+            slab_[d].moving[j] = w_[d][j] != 0;
+            slab_[d].negative[j] = w_[d][j] < 0;
+            slab_[d].factor[j] = other == 0 ? Int(1) : other < 0 ? Int(-other) : other;
+        }
     }
     const std::size_t n = lattice.elements.size();
     if (n == 0) return;
@@ -193,8 +207,9 @@ OctagonalShot<Int> OctagonalBvh<Int>::shoot(const Int (&p)[2], unsigned d) const
     const Int per_t = ax == 0 || ay == 0 ? Int(1) : Int(ax * ay);
     const Int form[4] = {p[0], p[1], Int(p[0] - p[1]), Int(p[0] + p[1])};
 
+    const Slab& way = slab_[d];
     Int enter{}, bound{};
-    if (!slab(nodes_[0], p, d, enter, bound)) return shot;
+    if (!slab(nodes_[0], p, way, enter, bound)) return shot;
 
     constexpr int stack_size = 64; // a median split: at most 33 levels below 2^32 elements
     std::uint32_t stack[stack_size];
@@ -222,8 +237,8 @@ OctagonalShot<Int> OctagonalBvh<Int>::shoot(const Int (&p)[2], unsigned d) const
             // Both children; the one the ray enters first is visited first.
             const std::uint32_t left = current + 1, right = node.first;
             Int enter_l{}, leave_l{}, enter_r{}, leave_r{};
-            const bool hit_l = slab(nodes_[left], p, d, enter_l, leave_l) && !(bound < enter_l);
-            const bool hit_r = slab(nodes_[right], p, d, enter_r, leave_r) && !(bound < enter_r);
+            const bool hit_l = slab(nodes_[left], p, way, enter_l, leave_l) && !(bound < enter_l);
+            const bool hit_r = slab(nodes_[right], p, way, enter_r, leave_r) && !(bound < enter_r);
             const bool swap = hit_l && hit_r && enter_r < enter_l;
             if (hit_l && hit_r) {
                 stack[top] = swap ? left : right;
