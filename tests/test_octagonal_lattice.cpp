@@ -197,7 +197,7 @@ TEST_CASE("octagonal lattice: agrees with the reference tracer on random octagon
     test::RandomOctagonalShape shape;
     shape.one_sided_percent = 30;
     const Arithmetic arithmetics[] = {Arithmetic::automatic, Arithmetic::int128, Arithmetic::wide};
-    const int cases = test::case_count(6000);
+    const int cases = test::case_count(6500);
     int compared = 0, tails = 0, limits = 0, cycles = 0, hits = 0;
     for (int i = 0; i < cases; ++i) {
         shape.box = test::pick(rng, 2, 6);
