@@ -4,12 +4,14 @@
 // corner of a diagonal and a wall, a rho cycle through a one-way mirror),
 // the shooters that refuse diagonals, and agreement with the reference
 // tracer on random octagonal scenes.
+#include "engine/reference_step.hpp"
 #include "engine/reference_tracer.hpp"
 #include "lattice/octagonal_lattice.hpp"
 #include "orthoray/bounds.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
+#include "shoot/octagonal_bvh.hpp"
 #include "support/case_count.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_octagonal.hpp"
@@ -192,7 +194,7 @@ TEST_CASE("octagonal lattice: grid, piece tables and cross-section grid refuse d
 }
 
 TEST_CASE("octagonal lattice: agrees with the reference tracer on random octagonal scenes",
-          "[octagonal][lattice][property]") {
+          "[octagonal][lattice][property][slow]") {
     std::mt19937_64 rng(1401);
     test::RandomOctagonalShape shape;
     shape.one_sided_percent = 30;
@@ -275,7 +277,7 @@ std::pair<Integer, Integer> enumerate_states(const lattice::OctagonalLattice& l)
 } // namespace
 
 TEST_CASE("octagonal bounds: exact point counts, states visited within them",
-          "[octagonal][bounds][property]") {
+          "[octagonal][bounds][property][slow]") {
     // The box of the '/' and '\' above, at scale 2: 32 wall points, 5 on
     // each diagonal, minus the three diagonal ends on walls and the crossing
     // (3, 1); the ray along x takes 4 directions.
@@ -349,7 +351,7 @@ TEST_CASE("bounds of several rays: each ray's own lattice, summed", "[octagonal]
 }
 
 TEST_CASE("octagonal lattice: its certificates are the reference tracer's, byte for byte",
-          "[octagonal][lattice][certificate]") {
+          "[octagonal][lattice][certificate][slow]") {
     // Until the verifier reads diagonals, the lattice engine's path is held
     // to the reference tracer's: the same points, directions, cycle start
     // and verdict, in both formats, capped runs included.
@@ -381,4 +383,58 @@ TEST_CASE("octagonal lattice: its certificates are the reference tracer's, byte 
         ++compared;
     }
     CHECK(compared > test::case_count(400) * 8 / 10);
+}
+
+namespace {
+
+// One shot of the hierarchy on integer type Int, against the reference
+// step (a rational scan of every element) from the same state.
+template <class Int>
+void check_shot(const Scene& s, const lattice::OctagonalLattice& l,
+                const shoot::OctagonalBvh<Int>& bvh, const lattice::Coords& at, unsigned d) {
+    const Int p[2] = {lattice::from_integer<Int>(at[0]), lattice::from_integer<Int>(at[1])};
+    const shoot::OctagonalShot<Int> shot = bvh.shoot(p, d);
+    const engine::ReferenceEvent want = engine::reference_step(s, l.point(at), l.direction(d));
+    REQUIRE(shot.escape == want.escape);
+    if (want.escape) return;
+    lattice::Coords hit;
+    for (int j = 0; j < 2; ++j) hit[j] = at[j] + lattice::to_integer(shot.t) * l.w[d][j];
+    CHECK(l.point(hit) == want.point);
+    const std::uint8_t next = l.next(d, shot.mirrors, shot.absorbers);
+    CHECK((next == lattice::absorbed) == want.absorbed);
+    if (!want.absorbed) CHECK(l.direction(next) == want.direction);
+}
+
+} // namespace
+
+TEST_CASE("octagonal BVH: next hits equal a scan of every element, on every integer type",
+          "[octagonal][lattice][shoot]") {
+    // From random multiples of N on both axes (scene points whose
+    // coordinates are integers after scaling by D: their cross values are
+    // integers, as on every ray line), in every direction.
+    std::mt19937_64 rng(1404);
+    test::RandomOctagonalShape shape;
+    shape.one_sided_percent = 30;
+    int shots = 0;
+    for (int i = 0; i < test::case_count(150); ++i) {
+        const Scene s = test::random_octagonal_scene(rng, shape);
+        INFO("case " << i << "\n" << write_scene(s));
+        const lattice::OctagonalLattice l = lattice::make_octagonal_lattice(s);
+        const shoot::OctagonalBvh<std::int64_t> narrow(l);
+        const shoot::OctagonalBvh<lattice::int128_t> wide(l);
+        const shoot::OctagonalBvh<Integer> gmp(l);
+        const Integer N = l.modulus, D = l.scale / N;
+        for (int k = 0; k < 20; ++k) {
+            // Half-steps over the box and a little beyond, on the D grid.
+            const lattice::Coords at{Integer(test::pick(rng, -2, 2 * shape.box + 2)) * D / 2 * N,
+                                     Integer(test::pick(rng, -2, 2 * shape.box + 2)) * D / 2 * N,
+                                     0};
+            const unsigned d = l.canonical[test::pick(rng, 0, 7)];
+            check_shot(s, l, narrow, at, d);
+            check_shot(s, l, wide, at, d);
+            check_shot(s, l, gmp, at, d);
+            ++shots;
+        }
+    }
+    CHECK(shots > test::case_count(150) * 10);
 }
