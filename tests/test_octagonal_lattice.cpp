@@ -31,7 +31,7 @@ Vector at(const Rational& x, const Rational& y) {
 
 // A diamond of four diagonal mirrors with corners (n, 0), (2n, n), (n, 2n),
 // (0, n), and a ray along +x at height h inside it.
-std::string diamond(int n, const std::string& h, const std::string& direction = "1 0") {
+std::string diamond(const Integer& n, const std::string& h, const std::string& direction = "1 0") {
     std::ostringstream s;
     s << "dim 2\nmirror \\ 0 " << n << ' ' << n << " 0\nmirror / " << n << " 0 " << 2 * n << ' '
       << n << "\nmirror \\ " << n << ' ' << 2 * n << ' ' << 2 * n << ' ' << n << "\nmirror / 0 "
@@ -94,6 +94,19 @@ TEST_CASE("octagonal lattice: a diamond of diagonals, period 4 off its axis and 
             CHECK(path.directions[1] == at(0, 1));
             CHECK(path.directions[4] == at(1, 0));
         }
+    // Coordinates past 2^59 and 2^123 run on int128 and GMP integers.
+    for (const auto& [digits, arithmetic] :
+         {std::pair{20, ArithmeticUsed::int128}, std::pair{40, ArithmeticUsed::gmp}}) {
+        Integer n;
+        mpz_ui_pow_ui(n.get_mpz_t(), 10, static_cast<unsigned long>(digits));
+        PathRecorder path;
+        const Answer a = lattice_solve(read_scene(diamond(n, "1/3")), &path);
+        CHECK(a.arithmetic == arithmetic);
+        CHECK(a.reason == Reason::cycle);
+        CHECK(a.reflections == 4);
+        REQUIRE(path.points.size() >= 2);
+        CHECK(path.points[1] == at(Rational(n + Rational(1, 3)), Rational(1, 3)));
+    }
     // Along a diagonal the ray slides along two sides and meets the other
     // two head on: straight back, period 2.
     const Answer a = lattice_solve(read_scene(diamond(4, "1", "1 1")));
