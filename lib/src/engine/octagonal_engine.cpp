@@ -145,13 +145,22 @@ private:
 
     // mu of docs/optics.md: the least i >= 1 with s_i = s_(i + lambda), by
     // walking s_i and s_(i + lambda) side by side from i = 1 (Brent's second
-    // pass), polling the monitor every 2^16 pairs of steps.
+    // pass). The monitor is polled between chunks of about 10 ms, sized as
+    // the stepping's are.
     void tail_pass(std::uint64_t lambda) {
         State<Int> behind = first_, ahead = first_;
         auto step = [&](State<Int>& s) { s = *next(s, shooter_.shoot(s.p, s.d)); };
-        std::uint64_t done = 0;
+        std::uint64_t chunk = 64, done = 0;
+        auto begin = Clock::now();
+        // One pair of steps (or one step of `ahead` while it runs ahead);
+        // false when the monitor stopped the run.
         auto paced = [&] {
-            if ((++done & 0xffff) != 0 || !options_.monitor) return true;
+            if (++done < chunk || !options_.monitor) return true;
+            done = 0;
+            const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+            if (seconds < 0.005 && chunk < (std::uint64_t{1} << 24)) chunk *= 2;
+            if (seconds > 0.02 && chunk > 1) chunk /= 2;
+            begin = Clock::now();
             if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
                 answer_.limit = *limit;
                 finish(Reason::limit);
