@@ -28,8 +28,10 @@
 #include "lattice/octagonal_lattice.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace orthoray::shoot {
@@ -85,33 +87,44 @@ private:
     std::uint32_t build(std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
                         const std::vector<Item>& items);
 
-    // Per direction and axis, what the slab test needs: whether the ray
-    // moves on the axis, towards -infinity, and the factor turning a
-    // coordinate difference into scaled time (|w_other|, or 1).
-    struct Slab {
-        bool moving[2], negative[2];
-        Int factor[2];
-    };
-    Slab slab_[lattice::direction_count];
+    // Per direction, what the slab test needs: a code `way` (bit j: the ray
+    // moves on axis j; bit 2 + j: towards -infinity) that selects a
+    // traversal with those signs fixed at compile time, and per axis the
+    // factor turning a coordinate difference into scaled time (|w_other|,
+    // or 1).
+    unsigned way_[lattice::direction_count]{};
+    Int factor_[lattice::direction_count][2];
 
     // [enter, leave] in scaled time; false when the box cannot hold a hit
     // (an axis the ray does not move on misses it, or it lies behind).
-    bool slab(const Node& node, const Int (&p)[2], const Slab& s, Int& enter, Int& leave) const {
+    template <unsigned Way>
+    static bool slab(const Node& node, const Int (&p)[2], const Int (&factor)[2], Int& enter,
+                     Int& leave) {
         bool first = true;
         for (int j = 0; j < 2; ++j) {
-            if (!s.moving[j]) {
+            const bool moving = (Way >> j) & 1u, negative = (Way >> (2 + j)) & 1u;
+            if (!moving) {
                 if (p[j] < node.lo[j] || node.hi[j] < p[j]) return false;
                 continue;
             }
-            const Int a = s.negative[j] ? Int((p[j] - node.hi[j]) * s.factor[j])
-                                        : Int((node.lo[j] - p[j]) * s.factor[j]);
-            const Int b = s.negative[j] ? Int((p[j] - node.lo[j]) * s.factor[j])
-                                        : Int((node.hi[j] - p[j]) * s.factor[j]);
+            const Int a = negative ? Int((p[j] - node.hi[j]) * factor[j])
+                                   : Int((node.lo[j] - p[j]) * factor[j]);
+            const Int b = negative ? Int((p[j] - node.lo[j]) * factor[j])
+                                   : Int((node.hi[j] - p[j]) * factor[j]);
             if (first || enter < a) enter = a;
             if (first || b < leave) leave = b;
             first = false;
         }
         return !(leave < enter) && Int(0) < leave;
+    }
+
+    template <unsigned Way>
+    OctagonalShot<Int> shoot_way(const Int (&p)[2], unsigned d) const;
+
+    template <std::size_t... Way>
+    static constexpr auto traversals(std::index_sequence<Way...>) {
+        return std::array<OctagonalShot<Int> (OctagonalBvh::*)(const Int(&)[2], unsigned) const,
+                          sizeof...(Way)>{&OctagonalBvh::shoot_way<Way>...};
     }
 };
 
@@ -128,9 +141,9 @@ OctagonalBvh<Int>::OctagonalBvh(const lattice::OctagonalLattice& lattice) {
         step_[d][lattice::falling] = x + y;
         for (int j = 0; j < 2; ++j) {
             const Int& other = w_[d][1 - j];
-            slab_[d].moving[j] = w_[d][j] != 0;
-            slab_[d].negative[j] = w_[d][j] < 0;
-            slab_[d].factor[j] = other == 0 ? Int(1) : other < 0 ? Int(-other) : other;
+            if (w_[d][j] != 0) way_[d] |= 1u << j;
+            if (w_[d][j] < 0) way_[d] |= 1u << (2 + j);
+            factor_[d][j] = other == 0 ? Int(1) : other < 0 ? Int(-other) : other;
         }
     }
     const std::size_t n = lattice.elements.size();
@@ -199,6 +212,13 @@ std::uint32_t OctagonalBvh<Int>::build(std::vector<std::uint32_t>& order, std::u
 
 template <class Int>
 OctagonalShot<Int> OctagonalBvh<Int>::shoot(const Int (&p)[2], unsigned d) const {
+    static constexpr auto table = traversals(std::make_index_sequence<16>{});
+    return (this->*table[way_[d]])(p, d);
+}
+
+template <class Int>
+template <unsigned Way>
+OctagonalShot<Int> OctagonalBvh<Int>::shoot_way(const Int (&p)[2], unsigned d) const {
     OctagonalShot<Int> shot;
     if (nodes_.empty()) return shot;
     const Int(&w)[2] = w_[d];
@@ -207,9 +227,9 @@ OctagonalShot<Int> OctagonalBvh<Int>::shoot(const Int (&p)[2], unsigned d) const
     const Int per_t = ax == 0 || ay == 0 ? Int(1) : Int(ax * ay);
     const Int form[4] = {p[0], p[1], Int(p[0] - p[1]), Int(p[0] + p[1])};
 
-    const Slab& way = slab_[d];
+    const Int(&factor)[2] = factor_[d];
     Int enter{}, bound{};
-    if (!slab(nodes_[0], p, way, enter, bound)) return shot;
+    if (!slab<Way>(nodes_[0], p, factor, enter, bound)) return shot;
 
     constexpr int stack_size = 64; // a median split: at most 33 levels below 2^32 elements
     std::uint32_t stack[stack_size];
@@ -237,8 +257,10 @@ OctagonalShot<Int> OctagonalBvh<Int>::shoot(const Int (&p)[2], unsigned d) const
             // Both children; the one the ray enters first is visited first.
             const std::uint32_t left = current + 1, right = node.first;
             Int enter_l{}, leave_l{}, enter_r{}, leave_r{};
-            const bool hit_l = slab(nodes_[left], p, way, enter_l, leave_l) && !(bound < enter_l);
-            const bool hit_r = slab(nodes_[right], p, way, enter_r, leave_r) && !(bound < enter_r);
+            const bool hit_l =
+                slab<Way>(nodes_[left], p, factor, enter_l, leave_l) && !(bound < enter_l);
+            const bool hit_r =
+                slab<Way>(nodes_[right], p, factor, enter_r, leave_r) && !(bound < enter_r);
             const bool swap = hit_l && hit_r && enter_r < enter_l;
             if (hit_l && hit_r) {
                 stack[top] = swap ? left : right;
