@@ -75,7 +75,8 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     // Diagonals (docs/octagonal.md): the illumination engines follow them,
     // and for a single trajectory every engine but induction.
     if (scene.single_trajectory() && options.engine == Engine::induction)
-        refuse_diagonals(scene, "--engine induction");
+        refuse_diagonals(scene, "--engine induction (the default engine, --engine lattice, "
+                                "reference or graph can solve it)");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided
