@@ -201,9 +201,6 @@ TEST_CASE("octagonal lattice: grid, piece tables and cross-section grid refuse d
     SolveOptions bvh;
     bvh.shooter = Shooter::bvh;
     CHECK(solve(s, bvh).shooter == ShooterUsed::bvh);
-    SolveOptions induction;
-    induction.engine = Engine::induction;
-    CHECK_THROWS_AS(solve(s, induction), UnsupportedScene);
 }
 
 TEST_CASE("octagonal lattice: agrees with the reference tracer on random octagonal scenes",

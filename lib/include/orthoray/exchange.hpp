@@ -68,7 +68,12 @@ struct IntervalExchange {
 
 // The exchange the induction engine builds for `scene`: nothing unless the
 // scene is 2D, its direction has two nonzero components, the ray reflects at
-// least once, and the piece tables stay within the engine's size cap.
+// least once, and the piece tables stay within the engine's size cap. For a
+// scene with diagonal elements it is the exchange on the eight-sheeted
+// cover (docs/induction.md, section 6), any direction allowed, with no
+// `transversals` or `scale` (its states are lifted states, not lattice
+// points); nothing when two states step to one there, or when the scene
+// has one-sided elements.
 std::optional<IntervalExchange> exchange_of(const Scene& scene);
 
 // Sees an induction: the exchange, then every step in the words of

@@ -7,6 +7,7 @@
 #include "engine/octagonal_engine.hpp"
 #include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
+#include "induction/octagonal_induction.hpp"
 #include "orthoray/state_graph.hpp"
 
 #include <new>
@@ -73,10 +74,10 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
     // Diagonals (docs/octagonal.md): the illumination engines follow them,
-    // and for a single trajectory every engine but induction.
-    if (scene.single_trajectory() && options.engine == Engine::induction)
-        refuse_diagonals(scene, "--engine induction (the default engine, --engine lattice, "
-                                "reference or graph can solve it)");
+    // and so does every engine for a single trajectory; induction has its
+    // own entry for them (the default engine simulates on the lattice).
+    if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::induction)
+        return induction::solve_octagonal_by_induction(scene, options);
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided

@@ -4,6 +4,7 @@
 
 #include "induction/exchange_builder.hpp"
 #include "induction/induction_engine.hpp"
+#include "induction/octagonal_induction.hpp"
 #include "induction/rauzy_induction.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
@@ -31,7 +32,7 @@ std::optional<IntervalExchange> exchange_on(const lattice::LatticeScene& scene) 
 } // namespace
 
 std::optional<IntervalExchange> exchange_of(const Scene& scene) {
-    refuse_diagonals(scene, "the interval exchange of a scene");
+    if (scene.has_diagonal()) return induction::octagonal_exchange_of(scene);
     if (scene.dim != 2) return std::nullopt;
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     if (ls.dim != 2) return std::nullopt; // a direction along an axis: no exchange

@@ -205,9 +205,11 @@ std::size_t isolate(std::vector<RawPiece>& pieces, const Integer& c) {
 
 } // namespace
 
-IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> pieces,
-                                 const Integer& raw_first, const std::vector<Integer>& raw_hits) {
-    const Integer& n = layout.size();
+IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
+                                 std::vector<Transversal> transversals,
+                                 std::vector<RawPiece> pieces, const Integer& raw_first,
+                                 const std::vector<Integer>& raw_hits) {
+    const Integer& n = size;
     std::sort(pieces.begin(), pieces.end(),
               [](const RawPiece& a, const RawPiece& b) { return a.start < b.start; });
     Integer at = 0;
@@ -291,9 +293,9 @@ IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> p
     }
     if (exchange.pieces.front().start != 0 || exchange.pieces.front().length != 1)
         throw std::logic_error("x is not a piece of its own");
-    exchange.modulus = layout.modulus();
+    exchange.modulus = modulus;
     exchange.size = n;
-    exchange.transversals = std::move(layout.transversals());
+    exchange.transversals = std::move(transversals);
     return exchange;
 }
 

@@ -93,8 +93,12 @@ struct RawPiece {
 
 // Steps 3-5 on raw pieces that tile [0, N): split out x and the hit states,
 // close the holes, rotate.
-IntervalExchange finish_exchange(ExchangeLayout& layout, std::vector<RawPiece> pieces,
-                                 const Integer& raw_first, const std::vector<Integer>& raw_hits);
+// `size` states, classes modulo `modulus`; the transversals go into the
+// result as they are.
+IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
+                                 std::vector<Transversal> transversals,
+                                 std::vector<RawPiece> pieces, const Integer& raw_first,
+                                 const std::vector<Integer>& raw_hits);
 
 template <class Int>
 IntervalExchange
@@ -197,7 +201,9 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
     }
     const auto first = layout.locate(x, x_negative);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
-    IntervalExchange exchange = finish_exchange(layout, std::move(raw), layout.raw(*first), hits);
+    IntervalExchange exchange =
+        finish_exchange(layout.size(), layout.modulus(), std::move(layout.transversals()),
+                        std::move(raw), layout.raw(*first), hits);
     exchange.first_transversal = first->first;
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];

@@ -1,13 +1,23 @@
 #include "orthoray/pieces.hpp"
 
+#include "induction/octagonal_induction.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "shoot/piece_table.hpp"
 
 namespace orthoray {
 
 PieceTableSummary write_piece_tables(const Scene& scene, std::ostream& out) {
-    refuse_diagonals(scene, "the piece tables");
     PieceTableSummary summary;
+    if (scene.has_diagonal()) {
+        // Octagonal: the first-return map on the eight-sheeted cover
+        // (docs/induction.md, section 6), on the orbit's class.
+        if (const auto pieces = induction::write_octagonal_pieces(scene, out)) {
+            summary.available = true;
+            summary.mirrors = scene.elements.size();
+            summary.pieces = *pieces;
+        }
+        return summary;
+    }
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     if (scene.dim != 2 || ls.dim != 2) return summary;
     // GMP integers: a dump is for reading, not for speed.

@@ -1,0 +1,211 @@
+#include "induction/octagonal_induction.hpp"
+
+#include "engine/reference_tracer.hpp"
+#include "induction/induction_engine.hpp"
+#include "induction/octagonal_exchange.hpp"
+#include "induction/rauzy_induction.hpp"
+
+#include <chrono>
+
+namespace orthoray::induction {
+namespace {
+
+using namespace octagonal;
+using lattice::int128_t;
+using lattice::to_integer;
+
+// The integers the geometry needs: every product it forms is at most the
+// scene's magnitude times (|a| + |b| + 1)^2 (octagonal_magnitude) times a
+// small constant.
+bool fits_int128(const Scene& scene) {
+    return octagonal_magnitude(scene) < (Integer(1) << 118);
+}
+
+// The first segment of the ray: an answer when it decides before reflection
+// 1; the lifted state x after reflection 1 when there is one.
+template <class Int>
+struct FirstSegment {
+    std::optional<Answer> answer;
+    bool reflects = false;
+    Point<Int> x;
+    int sheet = 0;
+};
+
+template <class Int>
+FirstSegment<Int> first_segment(const OctagonalScene<Int>& s) {
+    FirstSegment<Int> out;
+    auto decide = [&](Reason reason) {
+        if (out.answer) return;
+        Answer a;
+        a.reason = reason;
+        a.reflections = 0;
+        out.answer = a;
+    };
+    const Shot<Int> shot = s.shoot(s.start, 0);
+    // Is the target on [start, x] (on the whole ray when it escapes)?
+    const Int dx = Int(s.target[0] - s.start[0]), dy = Int(s.target[1] - s.start[1]);
+    const Int along = Int(s.a * dx + s.b * dy), norm = Int(s.a * s.a + s.b * s.b);
+    if (dx == 0 && dy == 0) decide(Reason::hit);
+    // target = start + (along / norm) v, the event at t = num / den.
+    if (Int(s.a * dy - s.b * dx) == 0 && along > 0 &&
+        (!shot.found || !(Int(shot.num * norm) < Int(along * shot.den))))
+        decide(Reason::hit);
+    if (!shot.found) {
+        decide(Reason::escape);
+        return out;
+    }
+    out.x = s.advance(s.start, 0, shot, false);
+    const Outcome<Int> event = outcome_at(s, s.acting_at(out.x, 0), 0);
+    if (event.absorbed) {
+        decide(Reason::absorbed);
+        return out;
+    }
+    out.reflects = true;
+    out.sheet = event.sheet;
+    return out;
+}
+
+// The most pieces the exchange may have (as for the axis-parallel engine).
+std::size_t cap_of(const Scene& scene) {
+    return piece_cap(scene.elements.size());
+}
+
+template <class Int>
+Answer solve_on(const Scene& scene, const SolveOptions& options) {
+    using Clock = std::chrono::steady_clock;
+    const auto begin = Clock::now();
+    const OctagonalScene<Int> s = make_octagonal<Int>(scene);
+    const FirstSegment<Int> first = first_segment(s);
+    if (first.answer) {
+        Answer answer = *first.answer;
+        answer.engine = EngineUsed::induction;
+        answer.arithmetic = lattice::arithmetic_used(Int{});
+        return answer;
+    }
+    std::optional<Limit> limit;
+    auto stop = [&](std::uint64_t) {
+        if (!options.monitor) return false;
+        limit = options.monitor->poll(1);
+        return limit.has_value();
+    };
+    Answer answer;
+    answer.engine = EngineUsed::induction;
+    answer.arithmetic = lattice::arithmetic_used(Int{});
+    auto limited = [&](Limit which) {
+        answer.reason = Reason::limit;
+        answer.limit = which;
+        answer.reflections = 1; // the first reflection was taken by a shot
+        return answer;
+    };
+    BuildFailure failure;
+    const std::optional<OctagonalLayout> layout = build_layout(
+        s, first.x, first.sheet, cap_of(scene), failure, nullptr, [&] { return stop(0); });
+    if (failure == BuildFailure::stopped) return limited(*limit);
+    if (!layout) return engine::solve_by_reference(scene, options);
+    if (stop(0)) return limited(*limit);
+    const IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {},
+                                                      layout->pieces, layout->first, layout->hits);
+    const std::optional<InducedOrbit> orbit = induce(exchange, nullptr, stop);
+    if (!orbit) return limited(*limit);
+    answer.stats.induction.pieces = exchange.pieces.size();
+    answer.stats.induction.states = exchange.size;
+    answer.stats.induction.steps = orbit->steps;
+    answer.stats.induction.rounds = orbit->rounds;
+    switch (orbit->event) {
+    case ExchangeEvent::none:
+        answer.reason = Reason::cycle;
+        answer.reflections = orbit->period;
+        break;
+    case ExchangeEvent::hit:
+        answer.reason = Reason::hit;
+        break;
+    case ExchangeEvent::escape:
+        answer.reason = Reason::escape;
+        break;
+    case ExchangeEvent::absorbed:
+        answer.reason = Reason::absorbed;
+        break;
+    }
+    // The event at T^e(x) is at the state after reflection e + 1.
+    if (orbit->event != ExchangeEvent::none) answer.reflections = orbit->offset + 1;
+    if (orbit->event == ExchangeEvent::none && layout->twin) {
+        // On the double cover the lifted orbit closes after the physical
+        // period p or after 2p, when T^p(x) is x's twin: mark the twin alone.
+        const IntervalExchange twin = finish_exchange(
+            layout->size, layout->modulus, {}, layout->pieces, layout->first, {*layout->twin});
+        const std::optional<InducedOrbit> half = induce(twin, nullptr, stop);
+        if (!half) return limited(*limit);
+        answer.stats.induction.steps += half->steps;
+        answer.stats.induction.rounds += half->rounds;
+        if (half->event == ExchangeEvent::hit) answer.reflections = half->offset;
+    }
+    if (options.max_steps) {
+        // As a simulation would: it notices a cycle one reflection after the period.
+        const Integer needed =
+            answer.reflections + (answer.reason == Reason::cycle ? Integer(1) : Integer(0));
+        const Integer cap(static_cast<unsigned long>(*options.max_steps));
+        if (needed > cap) {
+            answer.reason = Reason::limit;
+            answer.limit = Limit::steps;
+            answer.reflections = cap;
+        }
+    }
+    answer.stats.induction.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+    return answer;
+}
+
+template <class Int>
+std::optional<std::size_t> dump_on(const Scene& scene, std::ostream& out) {
+    const OctagonalScene<Int> s = make_octagonal<Int>(scene);
+    const FirstSegment<Int> first = first_segment(s);
+    if (!first.reflects) return std::nullopt;
+    BuildFailure failure;
+    const auto layout = build_layout(s, first.x, first.sheet, ~std::size_t{0}, failure, &out);
+    if (!layout) return std::nullopt;
+    return layout->pieces.size();
+}
+
+template <class Int>
+std::optional<IntervalExchange> exchange_on(const Scene& scene) {
+    const OctagonalScene<Int> s = make_octagonal<Int>(scene);
+    const FirstSegment<Int> first = first_segment(s);
+    if (!first.reflects) return std::nullopt;
+    BuildFailure failure;
+    auto layout = build_layout(s, first.x, first.sheet, cap_of(scene), failure);
+    if (!layout) return std::nullopt;
+    return finish_exchange(layout->size, layout->modulus, {}, std::move(layout->pieces),
+                           layout->first, layout->hits);
+}
+
+void refuse_certificates(const SolveOptions& options) {
+    if (options.path || options.induction_observer)
+        throw UnsupportedScene("the induction engine writes no certificates for scenes with "
+                               "diagonal elements yet (use --engine reference)");
+}
+
+} // namespace
+
+Answer solve_octagonal_by_induction(const Scene& scene, const SolveOptions& options) {
+    refuse_certificates(options);
+    // A one-way mirror lets two states step to one: no bijection to induce
+    // on, and the orbit may enter its cycle after a tail (docs/optics.md).
+    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
+    // The geometry runs on 128-bit integers when they cannot overflow (there
+    // is no 64-bit path: the scale factor alone often passes 2^63);
+    // Arithmetic::wide asks for GMP.
+    return options.arithmetic != Arithmetic::wide && fits_int128(scene)
+               ? solve_on<int128_t>(scene, options)
+               : solve_on<Integer>(scene, options);
+}
+
+std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene) {
+    if (scene.has_one_sided()) return std::nullopt; // no bijection: two states may step to one
+    return fits_int128(scene) ? exchange_on<int128_t>(scene) : exchange_on<Integer>(scene);
+}
+
+std::optional<std::size_t> write_octagonal_pieces(const Scene& scene, std::ostream& out) {
+    if (scene.has_one_sided()) return std::nullopt;
+    return fits_int128(scene) ? dump_on<int128_t>(scene, out) : dump_on<Integer>(scene, out);
+}
+
+} // namespace orthoray::induction
