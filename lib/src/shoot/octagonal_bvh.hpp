@@ -62,8 +62,6 @@ public:
     // From the lattice point p along direction d (an index of the lattice).
     OctagonalShot<Int> shoot(const Int (&p)[2], unsigned d) const;
 
-    std::size_t node_count() const { return nodes_.size(); }
-
     static constexpr std::uint32_t leaf_size = 2;
 
 private:
