@@ -34,6 +34,7 @@ std::string scale_text(const StateBounds& b) {
 }
 
 std::string moduli_text(const StateBounds& b) {
+    if (b.octagonal) return "N = " + b.line_modulus[0].get_str() + " (cross(w, P) = 0 mod N)";
     if (b.dim < 2) return "none (the ray moves on one axis)";
     if (b.dim == 2) return "G = " + b.line_modulus[0].get_str();
     return "G_xy = " + b.line_modulus[0].get_str() + ", G_xz = " + b.line_modulus[1].get_str() +
@@ -46,7 +47,9 @@ void print_json(const StateBounds& b) {
     std::cout << "{\"dim\":" << b.dim << ",\"scale\":[";
     for (int i = 0; i < b.dim; ++i)
         std::cout << (i ? "," : "") << b.scale[static_cast<std::size_t>(i)].get_str();
-    std::cout << "],\"elements\":" << b.elements << ",\"input_bits\":" << b.input_bits
+    std::cout << "],\"octagonal\":" << (b.octagonal ? "true" : "false")
+              << ",\"directions\":" << b.directions << ",\"rays\":" << b.rays
+              << ",\"elements\":" << b.elements << ",\"input_bits\":" << b.input_bits
               << ",\"magnitude_bits\":" << b.magnitude_bits << ",\"state_bits\":" << b.state_bits
               << ",\"points\":" << b.points.get_str()
               << ",\"lattice_states\":" << b.lattice_states.get_str() << ",\"line_modulus\":[";
@@ -66,7 +69,15 @@ void print_text(const StateBounds& b) {
     std::printf("magnitude bits   %zu (largest |lattice coordinate|)\n", b.magnitude_bits);
     std::printf("state bits       %zu\n", b.state_bits);
     std::printf("lattice points   %s (on the elements, each once)\n", b.points.get_str().c_str());
-    std::printf("lattice states   %s (points * 2^%d)\n", b.lattice_states.get_str().c_str(), b.dim);
+    if (b.octagonal)
+        std::printf("lattice states   %s (points * %u directions)\n",
+                    b.lattice_states.get_str().c_str(), b.directions);
+    else
+        std::printf("lattice states   %s (points * 2^%d)\n", b.lattice_states.get_str().c_str(),
+                    b.dim);
+    if (b.rays > 1)
+        std::printf("rays             %zu (points and states summed over their lattices)\n",
+                    b.rays);
     std::printf("line modulus     %s\n", moduli_text(b).c_str());
     std::printf("refined states   %s\n", b.refined_states.get_str().c_str());
     if (b.pieces) std::printf("piece tables     %zu pieces\n", *b.pieces);

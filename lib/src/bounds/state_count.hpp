@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bounds/line_invariant.hpp"
+#include "lattice/octagonal_lattice.hpp"
 
 namespace orthoray::bounds {
 
@@ -18,5 +19,10 @@ StateCount count_line_and_plane_states(const lattice::LatticeScene& scene,
 // M = 3: points exact; refined an upper bound (on a face, the invariant
 // coupling its two free coordinates is not used).
 StateCount count_space_states(const lattice::LatticeScene& scene, const LineInvariant& invariant);
+
+// A 2D scene with diagonals, on its octagonal lattice: points exact, refined
+// the states (on a point, each distinct direction) with cross(w, P) = 0
+// (mod N), exact.
+StateCount count_octagonal_states(const lattice::OctagonalLattice& lattice);
 
 } // namespace orthoray::bounds

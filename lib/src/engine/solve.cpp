@@ -4,6 +4,7 @@
 #include "engine/cycle_detector.hpp"
 #include "engine/illumination.hpp"
 #include "engine/lattice_engine.hpp"
+#include "engine/octagonal_engine.hpp"
 #include "engine/reference_illumination.hpp"
 #include "engine/reference_tracer.hpp"
 #include "induction/octagonal_induction.hpp"
@@ -72,14 +73,11 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    // Diagonals (docs/octagonal.md): the illumination engines and, for a
-    // single trajectory, the reference tracer, the state graph and the
-    // induction engine follow them; the lattice engine does not yet.
+    // Diagonals (docs/octagonal.md): the illumination engines follow them,
+    // and so does every engine for a single trajectory; induction has its
+    // own entry for them (the default engine simulates on the lattice).
     if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::induction)
         return induction::solve_octagonal_by_induction(scene, options);
-    if (scene.single_trajectory() && options.engine != Engine::reference &&
-        options.engine != Engine::graph)
-        refuse_diagonals(scene, "this engine (--engine reference or graph can solve it)");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided
@@ -111,6 +109,7 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     case Engine::induction:
         break;
     }
+    if (scene.has_diagonal()) return engine::solve_octagonal(scene, options);
     return engine::solve_on_lattice(scene, options);
 }
 
