@@ -10,6 +10,7 @@
 #include "stop_at_once.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -131,6 +132,27 @@ std::string lit_line(const Answer& answer) {
     return line;
 }
 
+// How long render lets the solver decide the caption's answer when no
+// --timeout is given: a picture should not wait for ever on a 3D orbit of
+// 10^30 reflections, which solve would step through.
+constexpr std::chrono::seconds decide_budget{10};
+
+std::string undecided_line() {
+    return "answer unknown: not decided within " + std::to_string(decide_budget.count()) +
+           " s ('orthoray solve' decides it without that limit)";
+}
+
+// The answer, with the engines and limits `solve` uses by default, but at
+// most decide_budget of time (render's own --timeout ends the process).
+Answer decide(const Scene& scene, const RenderArgs& args) {
+    SolveMonitor progress(scene, SolveMonitor::Clock::now() + decide_budget, !args.quiet);
+    SolveOptions options;
+    options.monitor = &progress;
+    const Answer answer = solve(scene, options);
+    progress.erase_progress();
+    return answer;
+}
+
 // Every branch of every ray, shaded by reflections so far, and each target
 // marked lit or unlit from solve(): for scenes with splitters, one-sided
 // elements, or several rays or targets (docs/render.md).
@@ -138,11 +160,8 @@ void draw_branches(const Scene& scene, const RenderArgs& args, SceneRenderer& re
     // For the progress line only: stop requests end the process at once.
     SolveMonitor progress(scene, std::nullopt, !args.quiet, "states");
     const BranchWalk walk = walk_branches(scene, renderer, args.steps, &progress);
-    SolveOptions options;
-    options.max_steps = args.steps;
-    options.monitor = &progress;
-    const Answer answer = solve(scene, options);
     progress.erase_progress();
+    const Answer answer = decide(scene, args);
     renderer.mark_targets(target_statuses(answer));
     if (answer.decided())
         renderer.add_caption(
@@ -153,8 +172,7 @@ void draw_branches(const Scene& scene, const RenderArgs& args, SceneRenderer& re
                       answer.period().get_str()
                 : verdict_line(answer_word(answer), answer.reason, answer.reflections));
     else
-        renderer.add_caption("answer unknown: the solver stopped at --steps " +
-                             std::to_string(args.steps) + " (--steps N goes further)");
+        renderer.add_caption(undecided_line());
     if (answer.illumination()) renderer.add_caption(lit_line(answer));
     if (const std::optional<std::string> key = element_key(scene)) renderer.add_caption(*key);
     renderer.add_caption(
@@ -252,25 +270,29 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         else if (claim.complete)
             end = {claim.reason, claim.direction};
     } else {
-        FirstSegments path(renderer, std::nullopt);
-        SolveOptions options;
-        options.max_steps = args.steps;
-        options.path = &path;
-        // Of the single-trajectory engines, the reference tracer follows
-        // diagonals (docs/octagonal.md).
-        if (scene.has_diagonal()) options.engine = Engine::reference;
-        // For the progress line only: stop requests end the process at once.
-        SolveMonitor progress(scene, std::nullopt, !args.quiet);
-        options.monitor = &progress;
-        const Answer answer = solve(scene, options);
-        progress.erase_progress();
+        // The caption's answer is decided as `solve` decides it, not capped
+        // at --steps (in 2D the induction engine answers orbits far longer
+        // than any picture), within decide_budget.
+        const Answer answer = decide(scene, args);
         if (answer.decided())
             renderer.add_caption(
                 verdict_line(answer_word(answer), answer.reason, answer.reflections));
         else
-            renderer.add_caption("answer unknown: the first " + std::to_string(args.steps) +
+            renderer.add_caption(undecided_line());
+        // The picture: the first --steps reflections of the path.
+        FirstSegments path(renderer, std::nullopt);
+        SolveOptions options;
+        options.max_steps = args.steps;
+        options.path = &path;
+        // For the progress line only: stop requests end the process at once.
+        SolveMonitor progress(scene, std::nullopt, !args.quiet);
+        options.monitor = &progress;
+        const Answer drawn = solve(scene, options);
+        progress.erase_progress();
+        if (!drawn.decided())
+            renderer.add_caption("path: the first " + std::to_string(args.steps) +
                                  " reflections are drawn (--steps N draws more)");
-        end = {answer.reason, path.last_direction()};
+        end = {drawn.reason, path.last_direction()};
     }
     if (!branches) renderer.finish(end);
     write_picture(renderer, args);
@@ -305,8 +327,9 @@ Command add_render(CLI::App& app) {
                     "draw the path this certificate lists (text or jsonl) instead of solving");
     CLI::Option* steps =
         cmd->add_option("--steps", args->steps,
-                        "draw the first N segments: without --certificate, solve with at most N "
-                        "reflections (default 1000); for branches, walk at most N states")
+                        "draw the first N segments (default 1000): the path's first N "
+                        "reflections, or for branches at most N states; the caption's answer "
+                        "is decided as 'solve' decides it")
             ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000'000}));
     add_scene_format_option(cmd, args->format);
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the drawing");

@@ -296,3 +296,31 @@ TEST_CASE("the piece tables of a diagonal scene are the cover's first-return map
     CHECK(text.find("sheet") != std::string::npos);
     CHECK(exchange_of(s)->pieces.size() >= summary.pieces);
 }
+
+TEST_CASE("the default engine simulates a short octagonal orbit and induces a long one",
+          "[octagonal][induction]") {
+    // The diamond of side 10^18 with direction (1, m), m odd: period 2m
+    // (the closed form above). m = 5 closes after 10 reflections, within the
+    // simulation's budget; m = 10^18 + 1 would take 2 * 10^18 reflections,
+    // so the default engine must hand it to the induction.
+    const Integer n("1000000000000000000");
+    Scene s = diamond(n);
+    shoot(s, Rational(1, 2), Rational(1, 2), 1, 5);
+    Answer a = solve(s);
+    CHECK(a.engine == EngineUsed::lattice);
+    CHECK(a.reflections == 10);
+    const Integer m("1000000000000000001");
+    shoot(s, Rational(1, 2), Rational(1, 2), 1, m);
+    a = solve(s);
+    CHECK(a.engine == EngineUsed::induction);
+    CHECK(a.reason == Reason::cycle);
+    CHECK(a.reflections == 2 * m);
+    // With a certificate to write, or a cap within the budget, it only
+    // simulates (the octagonal induction writes no certificate).
+    SolveOptions capped;
+    capped.max_steps = 1000;
+    a = solve(s, capped);
+    CHECK(a.engine == EngineUsed::lattice);
+    CHECK(a.reason == Reason::limit);
+    CHECK(a.reflections == 1000);
+}

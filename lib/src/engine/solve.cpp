@@ -10,6 +10,7 @@
 #include "induction/octagonal_induction.hpp"
 #include "orthoray/state_graph.hpp"
 
+#include <algorithm>
 #include <new>
 #include <stdexcept>
 
@@ -70,14 +71,37 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
     return answer;
 }
 
+// The default engine on an octagonal maze, as on an axis-parallel 2D one
+// (docs/octagonal.md): simulate on the lattice for max(16384, 64 n)
+// reflections, which answers most scenes at once; if that has not
+// answered, induce on the eight-sheeted cover, whose cost does not grow
+// with the orbit. Without an exchange to induce on, and with a
+// certificate to write (the octagonal induction writes none yet), the
+// simulation goes on instead, from the start.
+Answer solve_octagonal_automatically(const Scene& scene, const SolveOptions& options) {
+    if (options.path || options.induction_observer) return engine::solve_octagonal(scene, options);
+    const std::uint64_t budget = std::max<std::uint64_t>(16384, 64 * scene.elements.size());
+    if (options.max_steps && *options.max_steps <= budget)
+        return engine::solve_octagonal(scene, options);
+    SolveOptions first = options;
+    first.max_steps = budget;
+    const Answer simulated = engine::solve_octagonal(scene, first);
+    if (simulated.reason != Reason::limit || simulated.limit != Limit::steps) return simulated;
+    if (std::optional<Answer> induced = induction::induce_octagonal(scene, options))
+        return *induced;
+    return engine::solve_octagonal(scene, options);
+}
+
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
     // Diagonals (docs/octagonal.md): the illumination engines follow them,
-    // and so does every engine for a single trajectory; induction has its
-    // own entry for them (the default engine simulates on the lattice).
+    // and so does every engine for a single trajectory; induction and the
+    // default engine have their own entries for them.
     if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::induction)
         return induction::solve_octagonal_by_induction(scene, options);
+    if (scene.has_diagonal() && scene.single_trajectory() && options.engine == Engine::automatic)
+        return solve_octagonal_automatically(scene, options);
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided

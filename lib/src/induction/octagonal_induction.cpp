@@ -70,8 +70,9 @@ std::size_t cap_of(const Scene& scene) {
     return piece_cap(scene.elements.size());
 }
 
+// nullopt when there is no exchange to induce on (see induce_octagonal).
 template <class Int>
-Answer solve_on(const Scene& scene, const SolveOptions& options) {
+std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) {
     using Clock = std::chrono::steady_clock;
     const auto begin = Clock::now();
     const OctagonalScene<Int> s = make_octagonal<Int>(scene);
@@ -101,7 +102,7 @@ Answer solve_on(const Scene& scene, const SolveOptions& options) {
     const std::optional<OctagonalLayout> layout = build_layout(
         s, first.x, first.sheet, cap_of(scene), failure, nullptr, [&] { return stop(0); });
     if (failure == BuildFailure::stopped) return limited(*limit);
-    if (!layout) return engine::solve_by_reference(scene, options);
+    if (!layout) return std::nullopt;
     if (stop(0)) return limited(*limit);
     const IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {},
                                                       layout->pieces, layout->first, layout->hits);
@@ -185,17 +186,22 @@ void refuse_certificates(const SolveOptions& options) {
 
 } // namespace
 
-Answer solve_octagonal_by_induction(const Scene& scene, const SolveOptions& options) {
+std::optional<Answer> induce_octagonal(const Scene& scene, const SolveOptions& options) {
     refuse_certificates(options);
     // A one-way mirror lets two states step to one: no bijection to induce
     // on, and the orbit may enter its cycle after a tail (docs/optics.md).
-    if (scene.has_one_sided()) return engine::solve_by_reference(scene, options);
+    if (scene.has_one_sided()) return std::nullopt;
     // The geometry runs on 128-bit integers when they cannot overflow (there
     // is no 64-bit path: the scale factor alone often passes 2^63);
     // Arithmetic::wide asks for GMP.
     return options.arithmetic != Arithmetic::wide && fits_int128(scene)
                ? solve_on<int128_t>(scene, options)
                : solve_on<Integer>(scene, options);
+}
+
+Answer solve_octagonal_by_induction(const Scene& scene, const SolveOptions& options) {
+    if (std::optional<Answer> induced = induce_octagonal(scene, options)) return *induced;
+    return engine::solve_by_reference(scene, options);
 }
 
 std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene) {

@@ -22,6 +22,11 @@ namespace orthoray::induction {
 // one with one-sided elements. Certificates are refused (UnsupportedScene).
 Answer solve_octagonal_by_induction(const Scene& scene, const SolveOptions& options);
 
+// The same, but nothing where there is no exchange to induce on (one-sided
+// elements, a non-injective step map, too many pieces), so that the
+// caller can go on simulating (solve()'s automatic engine).
+std::optional<Answer> induce_octagonal(const Scene& scene, const SolveOptions& options);
+
 // The exchange (on the cover) solve_octagonal_by_induction would induce; nothing when
 // the ray meets nothing before, or at, its first event or when the exchange
 // cannot be built (see above).
