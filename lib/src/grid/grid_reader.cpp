@@ -214,7 +214,7 @@ private:
         throw InputError(file_, index.line, index.column,
                          "found " + what + " " + std::to_string(index.value) + ", expected a " +
                              what + " from 0 to " + std::to_string(count - 1) + " (the grid has " +
-                             std::to_string(count) + " " + what + "s)");
+                             std::to_string(count) + " " + what + (count == 1 ? ")" : "s)"));
     }
 
     void read_row(std::string_view line) {
