@@ -146,6 +146,11 @@ Outcome InstanceDecider::solve_scene(const Scene& scene, const std::string& head
         answer = solve(scene, options);
     } catch (const std::bad_alloc&) {
         answer = stopped_by(Limit::memory);
+    } catch (const UnsupportedScene& e) {
+        // A well-formed scene the chosen engine cannot take is this
+        // instance's bad input, not the end of the batch; no certificate.
+        return {Ending::bad_input, head + ",\"error\":" + json_string(e.what()) +
+                                       ",\"status\":" + std::to_string(bad_input) + '}'};
     }
     if (answer.reason == Reason::limit && answer.limit == Limit::interrupt)
         return {Ending::interrupted, {}};

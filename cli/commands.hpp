@@ -39,6 +39,7 @@ Command add_puzzle_solve(CLI::App& puzzle);
 Command add_puzzle_generate(CLI::App& puzzle);
 Command add_realistic(CLI::App& app);
 Command add_batch(CLI::App& app);
+Command add_version(CLI::App& app);
 
 struct GenerateArgs;
 

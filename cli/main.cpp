@@ -1,7 +1,6 @@
 // orthoray: decide whether a ray among axis-aligned mirrors reaches a point.
-#include "commands.hpp"
+#include "app.hpp"
 #include "orthoray/parse.hpp"
-#include "orthoray/version.hpp"
 #include "output_file.hpp"
 
 #include <algorithm>
@@ -29,6 +28,21 @@ void gmp_free(void* p, std::size_t) {
     std::free(p);
 }
 
+// The help that fits a usage error: that of the deepest subcommand named
+// on the command line ("orthoray puzzle solve --help"), else orthoray's.
+std::string help_command(int argc, char** argv, const CLI::App& app) {
+    std::string command = "orthoray";
+    const CLI::App* at = &app;
+    for (int i = 1; i < argc; ++i) {
+        const auto subs =
+            at->get_subcommands([&](const CLI::App* sub) { return sub->get_name() == argv[i]; });
+        if (subs.empty()) break;
+        at = subs.front();
+        command += ' ' + at->get_name();
+    }
+    return command + " --help";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -38,33 +52,8 @@ int main(int argc, char** argv) {
     // not a silent death by SIGPIPE or SIGXFSZ in the middle of a file.
     std::signal(SIGPIPE, SIG_IGN);
     std::signal(SIGXFSZ, SIG_IGN);
-    CLI::App app{
-        "orthoray: decides exactly whether a light ray among axis-aligned mirrors\n"
-        "reaches a target point, and proves the answer with a certificate.\n\n"
-        "Example:\n"
-        "  orthoray solve instances/2d/box-corner-3x5.scene --certificate path.cert\n"
-        "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
-        "  orthoray generate box --sides 3 5 -o box.scene\n"
-        "  orthoray bounds box.scene\n"
-        "  orthoray batch instances/ -o results.jsonl\n\n"
-        "Exit status: 0 yes (or valid), 1 no (or invalid), 2 bad input or usage,\n"
-        "3 a resource limit (steps, time, memory) or SIGINT/SIGTERM stopped the run first,\n"
-        "4 an internal error, 5 an output could not be written (full disk, closed pipe).\n"
-        "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
-        "docs/semantics.md. Pictures: docs/render.md."};
-    app.name("orthoray");
-    app.require_subcommand(1);
-    app.set_version_flag("--version", std::string("orthoray ") + orthoray::version);
-    Command solve = add_solve(app);
-    Command verify = add_verify(app);
-    Command pieces = add_pieces(app);
-    Command generate = add_generate(app);
-    Command bounds = add_bounds(app);
-    Command render = add_render(app);
-    Command convert = add_convert(app);
-    Command puzzle = add_puzzle(app);
-    Command realistic = add_realistic(app);
-    Command batch = add_batch(app);
+    CLI::App app;
+    const std::vector<Subcommand> subcommands = build_cli(app);
 
     // CLI11 would call an unknown command a missing one; name it instead,
     // with the commands as registered, so the list cannot drift.
@@ -83,20 +72,14 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e); // --help, --version
-        std::cerr << "orthoray: " << e.what() << " (see 'orthoray --help')\n";
+        std::cerr << "orthoray: " << e.what() << " (see '" << help_command(argc, argv, app)
+                  << "')\n";
         return bad_input;
     }
     try {
-        const int status = app.got_subcommand("solve")       ? solve()
-                           : app.got_subcommand("verify")    ? verify()
-                           : app.got_subcommand("generate")  ? generate()
-                           : app.got_subcommand("bounds")    ? bounds()
-                           : app.got_subcommand("render")    ? render()
-                           : app.got_subcommand("convert")   ? convert()
-                           : app.got_subcommand("puzzle")    ? puzzle()
-                           : app.got_subcommand("realistic") ? realistic()
-                           : app.got_subcommand("batch")     ? batch()
-                                                             : pieces();
+        int status = internal_error;
+        for (const Subcommand& sub : subcommands)
+            if (sub.app->parsed()) status = sub.run();
         finish_standard_output();
         return status;
     } catch (const WriteError& e) {

@@ -183,10 +183,10 @@ TEST_CASE("an unwritable --certificate path is a usage error", "[cli]") {
 TEST_CASE("an unknown command is named in the message", "[cli]") {
     const CliResult r = run_cli("frobnicate");
     require_bad_input(r);
-    CHECK(
-        r.err ==
-        "orthoray: found the command 'frobnicate', expected solve, verify, pieces, "
-        "generate, bounds, render, convert, puzzle, realistic or batch (see 'orthoray --help')\n");
+    CHECK(r.err ==
+          "orthoray: found the command 'frobnicate', expected solve, verify, pieces, "
+          "generate, bounds, render, convert, puzzle, realistic, batch or version (see 'orthoray "
+          "--help')\n");
 }
 
 // ---------------------------------------------------------------- help

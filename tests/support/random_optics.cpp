@@ -4,11 +4,7 @@
 #include "support/portable_random.hpp"
 
 namespace orthoray::test {
-namespace {
 
-// A point some branch passes: follow a random ray through a few events,
-// taking a random outgoing direction at each, and pick a point of the
-// segment reached (an end, an inner point, or a point of the final ray).
 Vector point_on_a_branch(std::mt19937_64& rng, const Scene& scene) {
     const Ray& ray = scene.rays[static_cast<std::size_t>(
         uniform(rng, 0, static_cast<std::int64_t>(scene.rays.size()) - 1))];
@@ -37,8 +33,6 @@ Vector point_on_a_branch(std::mt19937_64& rng, const Scene& scene) {
         v = out.direction;
     }
 }
-
-} // namespace
 
 Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape) {
     Scene scene = random_scene(rng, shape.scene);

@@ -15,4 +15,9 @@ struct RandomOpticsShape {
 
 Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape);
 
+// A point some branch passes: follow a random ray through a few events,
+// taking a random outgoing direction at each, and pick a point of the
+// segment reached (an end, an inner point, or a point of the final ray).
+Vector point_on_a_branch(std::mt19937_64& rng, const Scene& scene);
+
 } // namespace orthoray::test

@@ -18,7 +18,9 @@
 namespace orthoray {
 
 struct StateGraphReport {
-    std::uint64_t states = 0;    // vertices that are lattice states
+    // Vertices that are lattice states; with diagonals (docs/octagonal.md)
+    // only the states reachable from the start are built.
+    std::uint64_t states = 0;
     std::uint64_t reachable = 0; // of them, reachable from the start
     bool injective = true;       // no state is the image of two states
     Answer answer;

@@ -34,10 +34,21 @@ mpz_class get_magnitude(const std::uint8_t*& at, std::size_t bytes) {
 
 BranchStateSet::BranchStateSet(const Scene& scene, ByteBudget& budget)
     : dim_(scene.dim), budget_(budget) {
-    for (const Ray& r : scene.rays) {
-        const auto [it, added] = direction_class_.emplace(
-            magnitude(r.direction), static_cast<std::uint32_t>(class_magnitude_.size()));
+    auto add_class = [&](const Vector& m) {
+        const auto [it, added] =
+            direction_class_.emplace(m, static_cast<std::uint32_t>(class_magnitude_.size()));
         if (added) class_magnitude_.push_back(it->first);
+    };
+    for (const Ray& r : scene.rays) {
+        add_class(magnitude(r.direction));
+        // A diagonal swaps the components (docs/octagonal.md): (|b|, |a|) is
+        // a class of its own unless |a| = |b| (then the map merges them).
+        // Each class's magnitudes are stored as they are, so a key names
+        // (|a|, |b|) and (|b|, |a|) apart exactly.
+        if (scene.has_diagonal()) {
+            const Vector m = magnitude(r.direction);
+            add_class({m[1], m[0], m[2]});
+        }
     }
     offsets_.push_back(0);
     budget_.allocated(offsets_.capacity() * sizeof(std::uint64_t));

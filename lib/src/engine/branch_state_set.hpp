@@ -2,7 +2,8 @@
 // compact hash set. A state (point, direction) is kept as a short canonical
 // byte string in one arena: each coordinate of the point as its rational's
 // numerator and denominator bytes, the direction as the number of its
-// direction class (the rays' directions up to sign) and a sign mask. Equal
+// direction class (the rays' directions up to sign, and with diagonals
+// up to a swap of x and y too: one class each) and a sign mask. Equal
 // states have equal strings, so lookups compare bytes, never rationals. An
 // open-addressing table of 8-byte slots (state number, 32 hash bits) finds
 // them. Every buffer grows through a ByteBudget.
@@ -21,7 +22,8 @@ namespace orthoray::engine {
 class BranchStateSet {
 public:
     // Directions reachable from the scene's rays are their directions with
-    // components negated; those are the only ones insert() accepts.
+    // components negated, and with diagonals also swapped; those are the
+    // only ones insert() accepts.
     BranchStateSet(const Scene& scene, ByteBudget& budget);
 
     struct Inserted {

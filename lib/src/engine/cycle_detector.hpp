@@ -10,6 +10,16 @@
 
 namespace orthoray::engine {
 
+// Whether two different states may step to the same state, so that a
+// trajectory can enter its cycle after a tail. One-sided elements do it
+// (docs/optics.md), and so do diagonals (docs/octagonal.md): where a
+// diagonal and an x-mirror meet, a ray along x goes back along -x, but a
+// ray sliding along the x-mirror (parallel to it) is turned by the diagonal
+// alone, onto the same -x.
+inline bool may_have_tail(const Scene& scene) {
+    return scene.has_one_sided() || scene.has_diagonal();
+}
+
 // The detector an engine runs: the one asked for when the step map is
 // injective (every element two-sided), else Brent's. Comparing with the
 // first state is only sound for an injective map: after a tail the

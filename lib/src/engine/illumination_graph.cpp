@@ -32,7 +32,6 @@ enum : std::size_t { all_rays_vertex = 0 };
 
 std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64_t max_states,
                                                  RunMonitor* monitor) {
-    refuse_diagonals(scene, "the state graph");
     Answer answer;
     answer.engine = EngineUsed::graph;
     answer.arithmetic = ArithmeticUsed::rational;

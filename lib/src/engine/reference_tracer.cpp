@@ -9,22 +9,32 @@
 
 namespace orthoray::engine {
 
+namespace {
+
+// Where p + t v crosses the line of an element that acts on v (so v is not
+// parallel to it): an axis element's plane x_k = offset, or a diagonal's
+// line y - x = lo.y - lo.x ('/') or x + y = lo.x + hi.y ('\'). Returns
+// the exact t; whether p + t v lies on the element is the caller's check.
+Rational crossing(const Element& e, const Vector& p, const Vector& v) {
+    if (e.diagonal == Diagonal::rising) return (e.lo[1] - e.lo[0] - (p[1] - p[0])) / (v[1] - v[0]);
+    if (e.diagonal == Diagonal::falling) return (e.lo[0] + e.hi[1] - (p[0] + p[1])) / (v[0] + v[1]);
+    return (e.offset() - p[e.axis]) / v[e.axis];
+}
+
+} // namespace
+
 ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v) {
     ReferenceEvent event;
     std::vector<const Element*> acting;
     for (const Element& e : scene.elements) {
-        const int k = e.axis;
         if (!acts_on(e, v)) continue; // invisible to this ray (parallel, or its back)
-        Rational t = (e.offset() - p[k]) / v[k];
+        Rational t = crossing(e, p, v);
         if (t <= 0) continue;
         if (!event.escape && event.t < t) continue;
         Vector q;
-        bool on = true;
-        for (int j = 0; j < scene.dim && on; ++j) {
-            q[j] = j == k ? e.offset() : Rational(p[j] + t * v[j]);
-            on = e.lo[j] <= q[j] && q[j] <= e.hi[j];
-        }
-        if (!on) continue;
+        for (int j = 0; j < scene.dim; ++j)
+            q[j] = j == e.axis ? e.offset() : Rational(p[j] + t * v[j]);
+        if (!e.contains(q)) continue;
         if (event.escape || t < event.t) {
             event = ReferenceEvent{};
             event.escape = false;
@@ -135,7 +145,7 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
             if (auto period = detector.observe(s, reflections)) {
                 // Without one-sided elements the step map is injective and
                 // the trajectory purely periodic (tail 0, semantics.md).
-                if (!scene.has_one_sided()) return finish(Reason::cycle, *period);
+                if (!may_have_tail(scene)) return finish(Reason::cycle, *period);
                 const std::uint64_t tail = cycle_start(scene, first, *period) - 1;
                 answer.tail = Integer(static_cast<unsigned long>(tail));
                 if (options.path) options.path->cycle_start(first.p, first.v);
@@ -151,10 +161,11 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
 } // namespace
 
 Answer solve_by_reference(const Scene& scene, const SolveOptions& options) {
-    // One-sided elements make the step map non-injective: a trajectory may
-    // enter its cycle after a tail and never see its first state again, so
-    // the first-state detector would loop forever. Brent's is forced.
-    if (detector_for(scene.has_one_sided(), options.cycle_detector) == CycleDetector::brent)
+    // One-sided elements and diagonals make the step map non-injective: a
+    // trajectory may enter its cycle after a tail and never see its first
+    // state again, so the first-state detector would loop forever. Brent's
+    // is forced.
+    if (detector_for(may_have_tail(scene), options.cycle_detector) == CycleDetector::brent)
         return trace<BrentDetector<RationalState>>(scene, options);
     return trace<FirstStateDetector<RationalState>>(scene, options);
 }

@@ -37,8 +37,9 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     answer = report->answer;
     if (answer.decided() && options.max_steps) {
         Integer needed = answer.reflections + (answer.reason == Reason::cycle ? 1 : 0);
-        // With one-sided elements the simulations run Brent's detector.
-        if (answer.reason == Reason::cycle && scene.has_one_sided())
+        // With one-sided elements or diagonals the simulations run Brent's
+        // detector.
+        if (answer.reason == Reason::cycle && engine::may_have_tail(scene))
             needed = Integer(static_cast<unsigned long>(
                 engine::brent_detection(answer.tail.get_ui() + 1, answer.period().get_ui())));
         Integer cap = Integer(static_cast<unsigned long>(*options.max_steps));
@@ -70,7 +71,12 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 } // namespace
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
-    refuse_diagonals(scene, "solve");
+    // Diagonals (docs/octagonal.md): the illumination engines and, for a
+    // single trajectory, the reference tracer and the state graph follow
+    // them; the lattice and induction engines do not yet.
+    if (scene.single_trajectory() && options.engine != Engine::reference &&
+        options.engine != Engine::graph)
+        refuse_diagonals(scene, "solve");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided
