@@ -14,10 +14,12 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <sstream>
 
 using namespace orthoray;
 using namespace orthoray::test;
@@ -298,6 +300,86 @@ TEST_CASE("samples: puzzle splitters are refused where they stand (Advent of Cod
         CHECK(e.message().find("a puzzle splitter that sends a beam both ways") !=
               std::string::npos);
     }
+}
+
+TEST_CASE("samples that are scenes: the first corner receptor of a square room (LeetCode 858)",
+          "[grid][samples]") {
+    const auto folder = samples_folder();
+    if (!folder) {
+        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        return;
+    }
+    for (const std::string name :
+         {"leetcode858-mirror-reflection-1", "leetcode858-mirror-reflection-2"}) {
+        CAPTURE(name);
+        int p = 0, q = 0;
+        REQUIRE(std::sscanf(slurp((*folder / (name + ".txt")).string()).c_str(), "p = %d, q = %d",
+                            &p, &q) == 2);
+        // A p x p mirror box; receptors 0, 1, 2 at the SE, NE and NW corners
+        // are targets 1, 2, 3; the ray leaves the SW corner toward (p, q).
+        Scene room;
+        room.add_mirror(0, 0, {{0, p}});
+        room.add_mirror(0, p, {{0, p}});
+        room.add_mirror(1, 0, {{0, p}});
+        room.add_mirror(1, p, {{0, p}});
+        room.ray().direction = {Rational(p), Rational(q), Rational(0)};
+        room.targets = {{Rational(p), Rational(0), Rational(0)},
+                        {Rational(p), Rational(p), Rational(0)},
+                        {Rational(0), Rational(p), Rational(0)}};
+        const Answer a = solve(room);
+        REQUIRE(a.targets.size() == 3);
+        // The receptor reached first absorbs the ray: the lit target with
+        // the fewest reflections before it.
+        long first = -1;
+        for (std::size_t i = 0; i < 3; ++i)
+            if (a.targets[i].status == TargetAnswer::Status::lit &&
+                (first < 0 || a.targets[i].reflections < a.targets[first].reflections))
+                first = static_cast<long>(i);
+        CHECK(first == published(*folder, name));
+    }
+}
+
+TEST_CASE("samples that are scenes: the first mirror whose toggle lets the gaze through (USACO "
+          "Mirrors)",
+          "[grid][samples]") {
+    const auto folder = samples_folder();
+    if (!folder) {
+        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        return;
+    }
+    const std::string name = "usaco2013jan-bronze-mirrors";
+    std::istringstream in(slurp((*folder / (name + ".txt")).string()));
+    int n = 0, a = 0, b = 0;
+    REQUIRE(in >> n >> a >> b);
+    struct PointMirror {
+        int x, y;
+        char slope;
+    };
+    std::vector<PointMirror> mirrors(static_cast<std::size_t>(n));
+    for (PointMirror& m : mirrors) REQUIRE(in >> m.x >> m.y >> m.slope);
+    // Short mirrors centred on integer points: the gaze starts on integer
+    // lines and turns only at integer points, so it meets a mirror only at
+    // its centre, and a mirror's length (1 here) does not matter.
+    const auto answer_with = [&](std::size_t toggled) {
+        Scene scene;
+        const Rational h(1, 2);
+        for (std::size_t i = 0; i < mirrors.size(); ++i) {
+            const PointMirror& m = mirrors[i];
+            const bool rising = (m.slope == '/') != (i + 1 == toggled);
+            const Rational low = m.y - h, high = m.y + h;
+            scene.add_diagonal(ElementKind::mirror, m.x - h, rising ? low : high, m.x + h,
+                               rising ? high : low);
+        }
+        scene.ray().direction = {Rational(1), Rational(0), Rational(0)};
+        scene.target() = {Rational(a), Rational(b), Rational(0)};
+        SolveOptions options;
+        options.engine = Engine::reference;
+        return solve(scene, options).reason == Reason::hit;
+    };
+    long first = -1;
+    for (std::size_t toggled = 0; toggled <= mirrors.size() && first < 0; ++toggled)
+        if (answer_with(toggled)) first = static_cast<long>(toggled);
+    CHECK(first == published(*folder, name));
 }
 
 TEST_CASE("solve answers a .grid file from the command line", "[grid][cli]") {
