@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 using namespace orthoray;
 using namespace orthoray::test;
 
@@ -216,4 +218,15 @@ TEST_CASE("solve reports a bad grid with its position and nothing on stdout", "[
     CHECK(r.err == maze + ":4:2: found '-', a puzzle splitter that sends a beam both ways (not "
                           "optics, docs/grid-mazes.md), expected a cell: . (empty), / or \\ "
                           "(mirrors), # (block)\n");
+}
+
+TEST_CASE("batch takes a .grid file as an instance, not as a manifest", "[grid][cli]") {
+    TempDir dir;
+    dir.write("m.grid", "beam left 0\ntarget 0 1\ntarget 0 0\ngrid\n.\\\n..\n");
+    const std::string out = dir.path("r.jsonl");
+    const CliResult r = run_cli("batch " + quote(dir.path("m.grid")) + " -o " + quote(out));
+    CHECK(r.status == 0);
+    const std::string results = slurp(out);
+    CHECK(results.find("\"answer\":\"yes\",\"reason\":\"lit\"") != std::string::npos);
+    CHECK(std::count(results.begin(), results.end(), '\n') == 1);
 }
