@@ -1,8 +1,8 @@
 #include "batch_instance.hpp"
 
-#include "answer_json.hpp"
 #include "batch_results.hpp"
 #include "commands.hpp"
+#include "orthoray/answer_json.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"

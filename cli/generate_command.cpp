@@ -21,7 +21,7 @@ struct GenerateArgs {
     int dim = 2;
     std::int64_t mirrors = 20, range = 1000, denominator = 1, direction_size = 10;
     unsigned bits = 0;
-    std::string absorbers = "0", splitters = "0", one_sided = "0";
+    std::string absorbers = "0", splitters = "0", one_sided = "0", diagonals = "0";
     std::int64_t rays = 1, targets = 1;
     bool box = false;
     std::int64_t target_after = 0;
@@ -39,8 +39,9 @@ namespace {
 // Which options each family reads; any other family option is a usage error.
 const std::map<std::string, std::set<std::string>> family_options{
     {"random",
-     {"--dim", "--mirrors", "--absorbers", "--splitters", "--one-sided", "--rays", "--targets",
-      "--range", "--bits", "--denominator", "--box", "--target-after", "--direction-size"}},
+     {"--dim", "--mirrors", "--absorbers", "--splitters", "--one-sided", "--diagonals", "--rays",
+      "--targets", "--range", "--bits", "--denominator", "--box", "--target-after",
+      "--direction-size"}},
     {"box", {"--sides", "--start", "--direction", "--target", "--target-point"}},
     {"square", {"--direction"}},
     {"hallway", {"--length", "--slope"}},
@@ -84,6 +85,7 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
         f.absorbers = number(a.absorbers, "--absorbers");
         f.splitters = number(a.splitters, "--splitters");
         f.one_sided = number(a.one_sided, "--one-sided");
+        f.diagonals = number(a.diagonals, "--diagonals");
         f.rays = a.rays;
         f.targets = a.targets;
         f.range = given("--bits") ? std::int64_t{1} << a.bits : a.range;
@@ -174,12 +176,15 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
         "same bytes on every machine. Where the answer is known in closed form or by\n"
         "construction it is written as a comment '# expect: yes hit N' (or 'no cycle N', ...).\n\n"
         "Families and an example each:\n"
-        "  random          random mirrors (and absorbers, splitters, one-sided elements),\n"
-        "                  optionally boxed, with one or more rays and targets\n"
+        "  random          random mirrors (and absorbers, splitters, one-sided elements,\n"
+        "                  diagonals in 2D), optionally boxed, with one or more rays and\n"
+        "                  targets\n"
         "                    orthoray generate random --dim 2 --mirrors 50 --box --target-after 20 "
         "--seed 7\n"
         "                    orthoray generate random --mirrors 30 --splitters 1/3 --one-sided 1/4 "
         "--rays 2 --targets 3 --box\n"
+        "                    orthoray generate random --mirrors 12 --diagonals 1/2 --box "
+        "--target-after 8\n"
         "  box             the closed mirror box a x b (x c), from the corner 0 at 45 degrees\n"
         "                  (or --start/--direction); target reached, far, generic or a point\n"
         "                    orthoray generate box --sides 3 5 --target far\n"
@@ -213,6 +218,9 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--one-sided", args->one_sided,
                     "random: the chance an element is one-sided (x+ or x-, alike), a fraction "
                     "(default 0)");
+    cmd->add_option("--diagonals", args->diagonals,
+                    "random, 2D: the chance an element lies on a diagonal, '/' or '\\' alike "
+                    "(docs/octagonal.md), a fraction (default 0)");
     cmd->add_option("--rays", args->rays,
                     "random: the number of rays, 1 to 1000 (default 1), each a random start and "
                     "direction");

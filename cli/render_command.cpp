@@ -256,6 +256,9 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         SolveOptions options;
         options.max_steps = args.steps;
         options.path = &path;
+        // Of the single-trajectory engines, the reference tracer follows
+        // diagonals (docs/octagonal.md).
+        if (scene.has_diagonal()) options.engine = Engine::reference;
         // For the progress line only: stop requests end the process at once.
         SolveMonitor progress(scene, std::nullopt, !args.quiet);
         options.monitor = &progress;

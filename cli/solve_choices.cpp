@@ -88,8 +88,4 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
         ->check(CLI::IsMember(names(shooters)));
 }
 
-std::string engine_name(const Answer& answer, const std::string& asked) {
-    return answer.engine == EngineUsed::none ? asked : to_string(answer.engine);
-}
-
 } // namespace orthoray::cli

@@ -3,6 +3,8 @@
 // commands accept the same words and refuse the same values.
 #pragma once
 
+#include "orthoray/answer_json.hpp"
+
 #include "orthoray/answer.hpp"
 #include "orthoray/solve.hpp"
 
@@ -32,9 +34,5 @@ struct SolveChoices {
 // --max-steps, --timeout and --max-memory on `cmd`. `max_memory_help` says
 // what the memory limit covers (one solve, or the whole batch).
 void add_solve_choices(CLI::App* cmd, SolveChoices& choices, const std::string& max_memory_help);
-
-// The engine a report names: the one that ran, or when none did (memory ran
-// out first) the one asked for.
-std::string engine_name(const Answer& answer, const std::string& asked);
 
 } // namespace orthoray::cli

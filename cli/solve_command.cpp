@@ -1,6 +1,6 @@
 // orthoray solve FILE: decide an instance and print the answer.
-#include "answer_json.hpp"
 #include "commands.hpp"
+#include "orthoray/answer_json.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"

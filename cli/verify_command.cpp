@@ -5,6 +5,8 @@
 #include "orthoray/realistic.hpp"
 #include "scene_format_option.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 #include <memory>
 
@@ -13,7 +15,18 @@ namespace {
 
 struct VerifyArgs {
     std::string file, certificate, format;
+    bool json = false;
 };
+
+// The verdict as text ("valid: hit, 6 reflections") or one JSON object
+// {"valid": ..., "message": ...}; the exit status says the same.
+int report(const VerifyArgs& args, bool valid, const std::string& message) {
+    if (args.json)
+        std::cout << nlohmann::json{{"valid", valid}, {"message", message}}.dump() << '\n';
+    else
+        std::cout << message << '\n';
+    return valid ? yes : no;
+}
 
 bool is_realistic_model(const std::string& path) {
     const std::string ending = ".realistic";
@@ -27,14 +40,12 @@ int run(const VerifyArgs& args) {
         const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
         const RealisticVerdict verdict =
             verify_realistic_certificate(model, *cert, args.certificate);
-        std::cout << verdict.message << '\n';
-        return verdict.valid ? yes : no;
+        return report(args, verdict.valid, verdict.message);
     }
     const Scene scene = load_scene(args.file, scene_format_named(args.format));
     const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
     const Verdict verdict = verify_certificate(scene, *cert, args.certificate);
-    std::cout << verdict.message << '\n';
-    return verdict.valid ? yes : no;
+    return report(args, verdict.valid, verdict.message);
 }
 
 } // namespace
@@ -55,6 +66,8 @@ Command add_verify(CLI::App& app) {
         ->required();
     cmd->add_option("CERT", args->certificate, "the certificate file")->required();
     add_scene_format_option(cmd, args->format);
+    cmd->add_flag("--json", args->json,
+                  "print one JSON object: valid (true or false) and message (the text verdict)");
     return [args] { return run(*args); };
 }
 

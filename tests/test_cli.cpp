@@ -640,3 +640,36 @@ TEST_CASE("a step limit holds for the induction engine too", "[cli][induction]")
         CHECK(parse_json(enough.out)["reflections"] == 65535);
     }
 }
+
+TEST_CASE("'-' reads the scene from standard input", "[cli]") {
+    const std::string box = source_path("instances/2d/box-corner-3x5.scene");
+    const CliResult piped = run_cli("solve --json -", box);
+    const CliResult named = run_cli("solve --json " + quote(box));
+    REQUIRE(piped.status == 0);
+    CHECK(nlohmann::json::parse(piped.out)["reflections"] ==
+          nlohmann::json::parse(named.out)["reflections"]);
+    // Errors name the file '-'; JSON needs --format json, as nothing names it.
+    const CliResult bad = run_cli("solve -");
+    CHECK(bad.status == 2);
+    CHECK(bad.err.starts_with("-:1:1: found end of file"));
+}
+
+TEST_CASE("verify --json gives the verdict as one JSON object", "[cli]") {
+    TempDir dir;
+    const std::string box = source_path("instances/2d/box-corner-3x5.scene");
+    const std::string cert = dir.path("box.cert");
+    REQUIRE(run_cli("solve --certificate " + quote(cert) + " " + quote(box)).status == 0);
+    const CliResult good = run_cli("verify --json " + quote(box) + " " + quote(cert));
+    CHECK(good.status == 0);
+    const nlohmann::json verdict = nlohmann::json::parse(good.out);
+    CHECK(verdict["valid"] == true);
+    // The message is the text verdict, without its newline.
+    CHECK(verdict["message"].get<std::string>() + "\n" ==
+          run_cli("verify " + quote(box) + " " + quote(cert)).out);
+    // Another scene's certificate: invalid, exit 1, still one object.
+    const CliResult bad =
+        run_cli("verify --json " + quote(source_path("instances/2d/box-corner-4x6.scene")) + " " +
+                quote(cert));
+    CHECK(bad.status == 1);
+    CHECK(nlohmann::json::parse(bad.out)["valid"] == false);
+}

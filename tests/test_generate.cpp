@@ -373,3 +373,48 @@ TEST_CASE("random one-sided trajectory with the target on it: the constructed an
     f.one_sided = Rational(3, 2);
     CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
 }
+
+TEST_CASE("random octagonal scenes: diagonals as asked, the constructed answer",
+          "[generate][octagonal][slow]") {
+    // The lattice engine and the bounds do not take diagonals: the
+    // reference tracer and the state graph must both give the answer the
+    // generator built.
+    std::size_t diagonals = 0, elements = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        RandomFamily f;
+        f.mirrors = 10;
+        f.range = 40;
+        f.denominator = 1 + seed % 2;
+        f.box = seed % 5 != 0;
+        f.diagonals = Rational(1, 2);
+        f.one_sided = seed % 3 == 0 ? Rational(1, 3) : Rational(0);
+        f.target_after = static_cast<std::int64_t>(seed % 12);
+        f.seed = seed;
+        const GeneratedScene g = generate_random(f);
+        REQUIRE(g.expect);
+        const std::string text = write_generated(g);
+        INFO(text);
+        const Scene scene = read_scene(text);
+        for (const Element& e : scene.elements) {
+            diagonals += e.is_diagonal();
+            ++elements;
+            for (int j = 0; j < 2; ++j) CHECK((0 <= e.lo[j] && e.hi[j] <= f.range));
+        }
+        for (const Engine engine : {Engine::reference, Engine::graph}) {
+            SolveOptions o;
+            o.engine = engine;
+            const Answer a = solve(scene, o);
+            CHECK(a.reason == g.expect->reason);
+            CHECK(a.reflections == g.expect->reflections);
+        }
+    }
+    // About half of the random elements (the box's faces are axis mirrors).
+    CHECK(diagonals > elements / 4);
+    RandomFamily f;
+    f.diagonals = Rational(1, 2);
+    f.dim = 3;
+    CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
+    f.dim = 2;
+    f.diagonals = Rational(3, 2);
+    CHECK_THROWS_AS(generate_random(f), std::invalid_argument);
+}

@@ -101,3 +101,34 @@ TEST_CASE("diagonals let a ray escape or stop it", "[octagonal][closed-form]") {
     // The absorber's point itself is lit.
     CHECK(by_reference(turn + "absorber \\ 1 4 3 2\ntarget 2 3\n").reason == Reason::hit);
 }
+
+TEST_CASE("a diagonal splitter in the diamond", "[octagonal][closed-form][optics]") {
+    // The '/' side of the diamond from (2, 0) to (4, 2) made a splitter. The
+    // ray along y = 1 meets it at (3, 1): straight on it leaves the diamond
+    // (escape), reflected it goes round the square (3, 3), (1, 3), (1, 1)
+    // and back to (3, 1) along x, where both of its branches repeat.
+    const std::string scene = "dim 2\n"
+                              "mirror \\ 0 2 2 0\n"
+                              "splitter / 2 0 4 2\n"
+                              "mirror / 0 2 2 4\n"
+                              "mirror \\ 2 4 4 2\n"
+                              "ray 2 1 1 0\n"
+                              "target 2 3\ntarget 6 1\ntarget 1 2\ntarget 3 0\n";
+    for (const Engine engine : {Engine::automatic, Engine::reference, Engine::graph}) {
+        SolveOptions options;
+        options.engine = engine;
+        const Answer a = solve(read_scene(scene), options);
+        REQUIRE(a.targets.size() == 4);
+        using Status = TargetAnswer::Status;
+        CHECK(a.targets[0].status == Status::lit); // on (3, 3) -> (1, 3)
+        CHECK(a.targets[0].reflections == 2);
+        CHECK(a.targets[1].status == Status::lit); // straight through
+        CHECK(a.targets[1].reflections == 0);
+        CHECK(a.targets[2].status == Status::lit); // on (1, 3) -> (1, 1)
+        CHECK(a.targets[2].reflections == 3);
+        CHECK(a.targets[3].status == Status::unlit);
+        CHECK(a.reason == Reason::unlit);
+    }
+    // The branch search stores the start and the two states leaving (3, 1).
+    CHECK(solve(read_scene(scene)).states == 3);
+}

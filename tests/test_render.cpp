@@ -423,3 +423,30 @@ TEST_CASE("one-sided elements get ticks on the side that acts, in 2D and 3D", "[
     CHECK(with_class(deep.xml, "circle", "target-lit").size() == 4);  // one target, four views
     CHECK(with_class(deep.xml, "circle", "target-unlit").size() == 4);
 }
+
+TEST_CASE("diagonals are drawn between their ends, and their branches walked",
+          "[render][octagonal]") {
+    // '\' from (0, 2) down to (2, 0), '/' from (3, 0) up to (5, 2); the ray
+    // meets '\' at (1, 1) and leaves downward.
+    const BranchPicture p = draw_branches(orthoray::read_scene(
+        "dim 2\nmirror \\ 0 2 2 0\nmirror / 3 0 5 2\nray -1 1 1 0\ntarget 1 1\ntarget 9 9\n"));
+    INFO(p.xml.error);
+    REQUIRE(p.xml.well_formed);
+    const auto mirrors = with_class(p.xml, "path", "mirror");
+    REQUIRE(mirrors.size() == 1);
+    std::string d = mirrors[0]->attributes.at("d");
+    for (char& c : d)
+        if (c == 'M' || c == 'L') c = ' ';
+    std::istringstream numbers(d);
+    double x[4], y[4];
+    for (int i = 0; i < 4; ++i) REQUIRE(numbers >> x[i] >> y[i]);
+    // The page's y grows downward: '\' falls to the right on the page's
+    // terms, so its second end is lower (greater y); '/' rises.
+    CHECK(x[1] > x[0]);
+    CHECK(y[1] > y[0]);
+    CHECK(x[3] > x[2]);
+    CHECK(y[3] < y[2]);
+    CHECK(p.walk.states == 2); // the start and the state leaving (1, 1)
+    CHECK(with_class(p.xml, "circle", "target-lit").size() == 1);
+    CHECK(with_class(p.xml, "circle", "target-unlit").size() == 1);
+}

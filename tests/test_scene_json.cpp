@@ -117,6 +117,21 @@ TEST_CASE("huge and fractional rationals are kept exactly", "[json]") {
           "5/2");
 }
 
+TEST_CASE("integers may be JSON numbers, of any size, read exactly", "[json]") {
+    const std::string huge = "-98765432109876543210987654321";
+    auto replace = [](std::string text, const std::string& from, const std::string& to) {
+        return text.replace(text.find(from), from.size(), to);
+    };
+    const Scene numbers = read_scene_json(
+        replace(replace(edit("\"offset\": \"3\"", "\"offset\": 3"), "[\"-1\", \"4\"]", "[-1, 4]"),
+                "\"direction\": [\"3\", \"1\"]", "\"direction\": [" + huge + ", 1]"));
+    const Scene strings = read_scene_json(
+        edit("\"direction\": [\"3\", \"1\"]", "\"direction\": [\"" + huge + "\", \"1\"]"));
+    require_same(numbers, strings);
+    // A number past 2^53 would lose digits through a double.
+    CHECK(orthoray::to_string(numbers.ray().direction[0]) == huge);
+}
+
 TEST_CASE("the file name picks the format unless one is given", "[json]") {
     CHECK(orthoray::resolve_scene_format("a/b.json", SceneFormat::automatic) == SceneFormat::json);
     CHECK(orthoray::resolve_scene_format("a/b.scene", SceneFormat::automatic) == SceneFormat::text);
@@ -172,12 +187,17 @@ TEST_CASE("valid JSON that is not a scene is reported at the value at fault", "[
         {edit("\"dim\": 2,", "\"dim\": 2, \"dim\": 3,"),
          "t.json:2:13: found a second key \"dim\" (the first is on line 2), expected each key "
          "once"},
-        {edit("\"offset\": \"3\"", "\"offset\": 3"),
-         "t.json:4:47: found the number 3, expected the offset x = c: a rational as a JSON "
-         "string (\"3\", \"-7/2\", \"0.125\")"},
+        {edit("\"offset\": \"3\"", "\"offset\": 3.5"),
+         "t.json:4:47: found the JSON number 3.5, expected the offset x = c: a JSON number only "
+         "when it is an integer; write fractions and decimals as strings (\"3.5\") so that no "
+         "tool rounds them"},
+        {edit("\"offset\": \"3\"", "\"offset\": 3e0"),
+         "t.json:4:47: found the JSON number 3e0, expected the offset x = c: a JSON number only "
+         "when it is an integer; write fractions and decimals as strings (\"3e0\") so that no "
+         "tool rounds them"},
         {edit("\"offset\": \"3\"", "\"offset\": \"1e3\""),
-         "t.json:4:47: found the string \"1e3\", expected the offset x = c: a rational as a JSON "
-         "string (\"3\", \"-7/2\", \"0.125\")"},
+         "t.json:4:47: found the string \"1e3\", expected the offset x = c: an integer (3 or "
+         "\"3\") or a rational as a JSON string (\"-7/2\", \"0.125\")"},
         {edit("\"offset\": \"3\"", "\"offset\": \"3/0\""),
          "t.json:4:47: found the string \"3/0\", expected the offset x = c with a nonzero "
          "denominator"},

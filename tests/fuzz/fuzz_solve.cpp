@@ -2,8 +2,9 @@
 // the piece tables, the induction engine and the reference tracer, all
 // capped at 300 reflections, must agree; the default engine's certificate
 // must verify exactly when it answered. Optics scenes (splitters, one-sided
-// elements, several rays or targets) are held to the explicit state graph
-// instead (check_optics).
+// elements, several rays or targets) and octagonal ones (diagonals) are held
+// to the explicit state graph instead (check_optics, and
+// check_octagonal_trajectory with the reference tracer's certificate).
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
@@ -61,6 +62,9 @@ void check_optics(const orthoray::Scene& scene) {
     if (!scene.single_trajectory()) return;
     orthoray::SolveOptions alone;
     alone.max_steps = 300;
+    // Of the single-trajectory engines, the reference tracer follows
+    // diagonals (docs/octagonal.md).
+    if (scene.has_diagonal()) alone.engine = orthoray::Engine::reference;
     const orthoray::Answer trajectory = orthoray::solve(scene, alone);
     if (!trajectory.decided() || !found.decided()) return;
     const orthoray::TargetAnswer& a = found.targets.front();
@@ -70,6 +74,35 @@ void check_optics(const orthoray::Scene& scene) {
     if (a.status == orthoray::TargetAnswer::Status::lit &&
         (a.reflections != trajectory.reflections || a.ray != 1))
         std::abort();
+}
+
+// A single trajectory among diagonals (docs/octagonal.md): the reference
+// tracer, which writes the certificate, and the state graph of the states
+// reached must agree when both decide within their caps, and the
+// certificate must verify exactly when the tracer answered.
+void check_octagonal_trajectory(const orthoray::Scene& scene) {
+    orthoray::SolveOptions reference;
+    reference.max_steps = 300;
+    reference.engine = orthoray::Engine::reference;
+    std::ostringstream certificate;
+    orthoray::CertificateWriter writer(certificate, scene);
+    writer.attach(reference);
+    const orthoray::Answer traced = orthoray::solve(scene, reference);
+    writer.finish(traced);
+
+    orthoray::SolveOptions graph;
+    graph.max_steps = 300;
+    graph.engine = orthoray::Engine::graph;
+    graph.max_graph_states = optics_states;
+    const orthoray::Answer built = orthoray::solve(scene, graph);
+    if (traced.decided() && built.decided() &&
+        (traced.reason != built.reason || traced.reflections != built.reflections ||
+         traced.tail != built.tail))
+        std::abort();
+
+    std::istringstream in(certificate.str());
+    const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "fuzz");
+    if (verdict.valid != traced.decided()) std::abort();
 }
 
 } // namespace
@@ -86,9 +119,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     // The engines cross-checked below decide single trajectories among
-    // two-sided elements; the optics scenes are held to the state graph.
-    if (!scene.single_trajectory() || scene.has_one_sided()) {
+    // two-sided axis-aligned elements; the optics scenes are held to the
+    // state graph, and so are diagonal ones, whose trajectories only the
+    // reference tracer and the graph follow.
+    if (!scene.single_trajectory() || scene.has_one_sided() || scene.has_diagonal()) {
         check_optics(scene);
+        if (scene.single_trajectory() && scene.has_diagonal()) check_octagonal_trajectory(scene);
         return 0;
     }
     orthoray::SolveOptions options;

@@ -19,14 +19,14 @@ std::string slurp(const std::filesystem::path& p) {
 
 } // namespace
 
-CliResult run_cli(const std::string& args) {
+CliResult run_cli(const std::string& args, const std::string& input) {
     static int counter = 0;
     auto dir = std::filesystem::temp_directory_path() /
                ("orthoray-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     std::filesystem::create_directories(dir);
     std::string command = std::string("'") + ORTHORAY_CLI + "' " + args + " >'" +
-                          (dir / "out").string() + "' 2>'" + (dir / "err").string() +
-                          "' </dev/null";
+                          (dir / "out").string() + "' 2>'" + (dir / "err").string() + "' <'" +
+                          input + "'";
     int raw = std::system(command.c_str());
     CliResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

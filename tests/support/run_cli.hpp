@@ -10,8 +10,9 @@ struct CliResult {
     std::string out, err;
 };
 
-// `args` is appended to the binary's path as is (quote what needs quoting).
-CliResult run_cli(const std::string& args);
+// `args` is appended to the binary's path as is (quote what needs quoting);
+// standard input is the file `input` (nothing to read by default).
+CliResult run_cli(const std::string& args, const std::string& input = "/dev/null");
 
 std::string source_path(const std::string& relative);
 

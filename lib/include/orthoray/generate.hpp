@@ -47,6 +47,7 @@ struct RandomFamily {
     Rational absorbers = 0;       // the chance that an element absorbs, in [0, 1]
     Rational splitters = 0;       // the chance that an element that does not absorb splits
     Rational one_sided = 0;       // the chance that an element is one-sided (+ or - alike)
+    Rational diagonals = 0;       // 2D: the chance that an element lies on a diagonal
     std::int64_t rays = 1;        // rays, each with a random start and direction
     std::int64_t targets = 1;     // targets, random points (with target_after: rays = targets = 1)
     std::int64_t range = 1000;    // coordinates lie in [0, range]

@@ -3,7 +3,9 @@
 #pragma once
 
 #include "orthoray/answer.hpp"      // what a solver says: reason, reflections, what ran
+#include "orthoray/answer_json.hpp" // the answer as solve --json prints it
 #include "orthoray/bounds.hpp"      // bounds on the states a trajectory can visit
+#include "orthoray/build_info.hpp"  // versions of the library and of what it was built with
 #include "orthoray/certificate.hpp" // writing, reading and verifying certificates
 #include "orthoray/exchange.hpp"    // the interval exchange of a 2D scene, and its induction
 #include "orthoray/generate.hpp"    // instance families

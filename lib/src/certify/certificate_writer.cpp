@@ -186,12 +186,12 @@ void CertificateWriter::finish(const Answer& answer) {
         break;
     case Reason::cycle: {
         // The cycle's first state s_(T+1) and its period; with one-sided
-        // elements also the tail T (docs/certificates.md), which two-sided
-        // certificates leave out (it is 0).
+        // elements or diagonals also the tail T (docs/certificates.md),
+        // which other certificates leave out (it is 0).
         const Vector& point = cycle_start_ ? cycle_start_->first : first_reflection_point_;
         const Vector& direction = cycle_start_ ? cycle_start_->second : first_reflection_direction_;
         const std::string period = answer.period().get_str(), tail = answer.tail.get_str();
-        const bool with_tail = scene_.has_one_sided() || answer.tail != 0;
+        const bool with_tail = scene_.has_one_sided() || scene_.has_diagonal() || answer.tail != 0;
         if (json) {
             out_ << ", \"state\": {\"point\": ";
             write_vector(point);

@@ -83,8 +83,8 @@ public:
             stopped_ = true;
             return;
         }
-        for (int j = 0; j < dim_; ++j)
-            if (e.flip[j]) v_[j] = -v_[j];
+        // No splitter acts on a single trajectory: one way on.
+        v_ = certify::outgoing(v_, e, dim_).front();
         // Keep state 1 and the first later state equal to it: for a cycle
         // without a tail that return settles the claim in this one pass.
         if (k == 1) {
@@ -176,8 +176,7 @@ std::optional<std::string> check_cycle(const Scene& scene, const PathCheck& path
     for (std::uint64_t i = 1; i <= start + period; ++i) {
         const Event e = first_met(scene, p, v);
         p = advance(p, v, e.t, dim); // met, not absorbed: the points were checked
-        for (int j = 0; j < dim; ++j)
-            if (e.flip[j]) v[j] = -v[j];
+        v = certify::outgoing(v, e, dim).front();
         const bool at_start = same(p, claim.extra, dim) && same(v, claim.extra_v, dim);
         if (i == tail) {
             p_tail = p;
@@ -244,8 +243,10 @@ Verdict judge(const Scene& scene, const PathCheck& path, const Claim& claim) {
         break;
     case Reason::cycle: {
         const Integer tail = claim.tail.value_or(0);
-        if (!claim.tail && scene.has_one_sided())
-            return bad("a cycle in a scene with one-sided elements needs its 'tail' line");
+        // Both can merge two states into one, so a cycle may have a tail.
+        if (!claim.tail && (scene.has_one_sided() || scene.has_diagonal()))
+            return bad("a cycle in a scene with one-sided elements or diagonals needs its "
+                       "'tail' line");
         if (claim.period == 0) return bad("period 0: a cycle's period is at least 1");
         // The listed points must reach p_(T+L+1), the first return to the
         // cycle's start; a detector that notices the cycle late (Brent's)
@@ -290,7 +291,6 @@ Reason read_reason(const certify::CertificateReader& in) {
 
 Verdict verify_certificate(const Scene& scene, std::istream& certificate,
                            const std::string& certificate_name) {
-    refuse_diagonals(scene, "verify");
     certify::CertificateReader in(certificate, certificate_name);
     PathCheck path(scene);
     Claim claim;
@@ -311,10 +311,11 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
         if (in.keyword() == "method") {
             certify::PathPrefix prefix;
             prefix.failure = path.failure();
-            // Induction needs a bijective step map: two-sided elements only.
-            if (!prefix.failure && scene.has_one_sided())
+            // Induction needs a bijective step map of axis-aligned elements:
+            // two-sided ones only, no diagonals.
+            if (!prefix.failure && (scene.has_one_sided() || scene.has_diagonal()))
                 prefix.failure = "invalid: induction certificates are for scenes without "
-                                 "one-sided elements";
+                                 "one-sided elements or diagonals";
             prefix.points = path.points();
             prefix.absorbed = path.stopped();
             prefix.p1 = path.p1();

@@ -143,8 +143,9 @@ Answer trace(const Scene& scene, const SolveOptions& options) {
             if (options.path) options.path->visit(s.p, s.v);
             if (reflections == 1) first = s;
             if (auto period = detector.observe(s, reflections)) {
-                // Without one-sided elements the step map is injective and
-                // the trajectory purely periodic (tail 0, semantics.md).
+                // Without one-sided elements or diagonals the step map is
+                // injective and the trajectory purely periodic (tail 0,
+                // semantics.md).
                 if (!may_have_tail(scene)) return finish(Reason::cycle, *period);
                 const std::uint64_t tail = cycle_start(scene, first, *period) - 1;
                 answer.tail = Integer(static_cast<unsigned long>(tail));

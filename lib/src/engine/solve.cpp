@@ -76,7 +76,7 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
     // them; the lattice and induction engines do not yet.
     if (scene.single_trajectory() && options.engine != Engine::reference &&
         options.engine != Engine::graph)
-        refuse_diagonals(scene, "solve");
+        refuse_diagonals(scene, "this engine (--engine reference or graph can solve it)");
     // The illumination question (several rays or targets, splitters) is
     // decided by its own search (or the state graph when asked for). A
     // single trajectory goes to the engine asked for: with one-sided

@@ -1,5 +1,6 @@
-// The `random` family: random mirrors and absorbers, optionally boxed, and a
-// target either random or placed on the trajectory.
+// The `random` family: random mirrors and absorbers (axis-aligned, or in 2D
+// also diagonal), optionally boxed, and a target either random or placed on
+// the trajectory.
 #include "engine/reference_step.hpp"
 #include "generate/box_faces.hpp"
 #include "orthoray/generate.hpp"
@@ -51,6 +52,9 @@ void check(const RandomFamily& f) {
     check_chance(f.absorbers, "absorber");
     check_chance(f.splitters, "splitter");
     check_chance(f.one_sided, "one-sided");
+    check_chance(f.diagonals, "diagonal");
+    if (f.diagonals > 0 && f.dim != 2)
+        throw std::invalid_argument("diagonal elements are 2D only: they need dimension 2");
     if (f.rays < 1 || f.rays > 1000) throw std::invalid_argument("the rays must be 1 to 1000");
     if (f.targets < 1 || f.targets > 1000)
         throw std::invalid_argument("the targets must be 1 to 1000");
@@ -111,29 +115,47 @@ GeneratedScene generate_random(const RandomFamily& f) {
     const std::int64_t side = std::max<std::int64_t>(
         2, f.range / integer_root(std::max<std::int64_t>(1, f.mirrors), f.dim));
     const Integer absorb_num = f.absorbers.get_num(), absorb_den = f.absorbers.get_den();
-    for (std::int64_t i = 0; i < f.mirrors; ++i) {
-        const int axis = static_cast<int>(uniform(rng, 0, f.dim - 1));
-        const Rational offset = random_number(rng, f, 0, f.range);
-        std::vector<std::pair<Rational, Rational>> extent;
-        for (int j = 0; j < f.dim; ++j) {
-            if (j == axis) continue;
-            Rational length = random_number(rng, f, side / 2, side);
-            if (length == 0) length = 1;
-            if (length > f.range) length = f.range;
-            const Rational room = f.range - length;
-            Integer floor_room;
-            mpz_fdiv_q(floor_room.get_mpz_t(), room.get_num_mpz_t(), room.get_den_mpz_t());
-            const Rational lo = random_number(rng, f, 0, floor_room.get_si());
-            extent.emplace_back(lo, lo + length);
-        }
+    // A length in [side / 2, side] and where it starts, inside [0, range].
+    auto random_extent = [&]() {
+        Rational length = random_number(rng, f, side / 2, side);
+        if (length == 0) length = 1;
+        if (length > f.range) length = f.range;
+        const Rational room = f.range - length;
+        Integer floor_room;
+        mpz_fdiv_q(floor_room.get_mpz_t(), room.get_num_mpz_t(), room.get_den_mpz_t());
+        const Rational lo = random_number(rng, f, 0, floor_room.get_si());
+        return std::make_pair(lo, Rational(lo + length));
+    };
+    auto random_kind = [&]() {
         const bool absorber =
             Integer(static_cast<long>(uniform(rng, 0, absorb_den.get_si() - 1))) < absorb_num;
         // Drawn whether or not the element absorbs, so each element takes
         // the same number of draws whatever its kind.
         const bool splitter = happens(rng, f.splitters);
-        const ElementKind kind = absorber   ? ElementKind::absorber
-                                 : splitter ? ElementKind::splitter
-                                            : ElementKind::mirror;
+        return absorber   ? ElementKind::absorber
+               : splitter ? ElementKind::splitter
+                          : ElementKind::mirror;
+    };
+    for (std::int64_t i = 0; i < f.mirrors; ++i) {
+        if (happens(rng, f.diagonals)) {
+            // A diagonal (docs/octagonal.md): its x-extent, then where its
+            // lower end lies in y, then its slope; always two-sided.
+            const auto [x0, x1] = random_extent();
+            const Rational length = x1 - x0, room = f.range - length;
+            Integer floor_room;
+            mpz_fdiv_q(floor_room.get_mpz_t(), room.get_num_mpz_t(), room.get_den_mpz_t());
+            const Rational y0 = random_number(rng, f, 0, floor_room.get_si());
+            const Rational y1 = y0 + length;
+            const bool rising = uniform(rng, 0, 1) == 0;
+            scene.add_diagonal(random_kind(), x0, rising ? y0 : y1, x1, rising ? y1 : y0);
+            continue;
+        }
+        const int axis = static_cast<int>(uniform(rng, 0, f.dim - 1));
+        const Rational offset = random_number(rng, f, 0, f.range);
+        std::vector<std::pair<Rational, Rational>> extent;
+        for (int j = 0; j < f.dim; ++j)
+            if (j != axis) extent.push_back(random_extent());
+        const ElementKind kind = random_kind();
         Side facing = Side::both;
         if (happens(rng, f.one_sided)) facing = uniform(rng, 0, 1) == 0 ? Side::plus : Side::minus;
         scene.add(kind, axis, offset, extent, facing);
@@ -143,16 +165,18 @@ GeneratedScene generate_random(const RandomFamily& f) {
     out.notes.push_back(
         "random: " + std::to_string(f.mirrors) + " elements" +
         (f.box ? " inside the mirror box [0, " + std::to_string(f.range) + "]" : ""));
-    if (f.splitters > 0 || f.one_sided > 0) {
-        std::size_t counts[3] = {0, 0, 0}, one_sided = 0;
+    if (f.splitters > 0 || f.one_sided > 0 || f.diagonals > 0) {
+        std::size_t counts[3] = {0, 0, 0}, one_sided = 0, diagonal = 0;
         for (const Element& e : std::span(scene.elements).subspan(first_random)) {
             ++counts[static_cast<int>(e.kind)];
             one_sided += e.one_sided();
+            diagonal += e.is_diagonal();
         }
         out.notes.push_back("kinds of the random elements: " + std::to_string(counts[0]) +
                             " mirrors, " + std::to_string(counts[2]) + " splitters, " +
                             std::to_string(counts[1]) + " absorbers; " + std::to_string(one_sided) +
-                            " one-sided");
+                            " one-sided" +
+                            (f.diagonals > 0 ? "; " + std::to_string(diagonal) + " diagonal" : ""));
     }
 
     if (!f.target_after) {

@@ -27,6 +27,13 @@ namespace {
 
 // Opens `path` for reading and refuses a directory.
 int open_for_reading(const std::string& path) {
+    // "-" is standard input, as for most Unix tools; a duplicate, so that
+    // closing it after the read leaves the process's own stdin alone.
+    if (path == "-") {
+        const int fd = ::fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 0);
+        if (fd < 0) fail_to_read(path, errno, "a readable standard input");
+        return fd;
+    }
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) fail_to_read(path, errno, "no readable file");
     struct stat info {};

@@ -16,7 +16,8 @@ namespace {
 
 using io::JsonValue;
 
-constexpr const char* rational_forms = "a rational as a JSON string (\"3\", \"-7/2\", \"0.125\")";
+constexpr const char* rational_forms =
+    "an integer (3 or \"3\") or a rational as a JSON string (\"-7/2\", \"0.125\")";
 
 class SceneJsonReader {
 public:
@@ -133,7 +134,25 @@ private:
         return *value;
     }
 
+    // A rational: a JSON string in the .scene number syntax, or a JSON
+    // number that is an integer (its literal text is read exactly, never as
+    // a double). A JSON number with a fraction or exponent is refused, since
+    // JSON tools read those as binary floating point: write it as a string.
     Rational number(const JsonValue& value, const std::string& what) const {
+        if (value.type == JsonValue::Type::number) {
+            const std::string_view text = value.text;
+            const std::size_t digits = text.starts_with('-') ? 1 : 0;
+            if (text.size() > digits &&
+                text.find_first_not_of("0123456789", digits) == std::string_view::npos) {
+                ReadStopCheck::poll();
+                Rational integer(mpz_class(std::string(text), 10));
+                return integer;
+            }
+            fail(value, "found the JSON number " + std::string(text) + ", expected " + what +
+                            ": a JSON number only when it is an integer; write " +
+                            "fractions and decimals as strings (\"" + std::string(text) +
+                            "\") so that no tool rounds them");
+        }
         if (value.type != JsonValue::Type::string)
             fail(value,
                  "found " + io::describe(value) + ", expected " + what + ": " + rational_forms);

@@ -29,7 +29,6 @@ struct Queued {
 
 BranchWalk walk_branches(const Scene& scene, BranchSink& sink, std::uint64_t max_states,
                          RunMonitor* monitor) {
-    refuse_diagonals(scene, "render");
     BranchWalk walk;
     std::map<State, std::size_t> id;
     std::vector<State> states;

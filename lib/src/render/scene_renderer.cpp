@@ -99,7 +99,9 @@ struct SceneRenderer::Impl {
             std::unordered_set<std::string> seen;
             for (const Element& e : scene.elements) {
                 if (v.shapes >= cap) break;
-                Point3 c0 = frame.normalised(e.lo), c1 = frame.normalised(e.hi);
+                // A diagonal (2D) runs between its ends, not its box's corners.
+                Point3 c0 = frame.normalised(e.is_diagonal() ? e.from() : e.lo),
+                       c1 = frame.normalised(e.is_diagonal() ? e.to() : e.hi);
                 std::vector<Pixel> corners;
                 bool face = false;
                 if (scene.dim == 2 || (!v.oblique && (e.axis == v.a || e.axis == v.b))) {

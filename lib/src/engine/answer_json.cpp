@@ -1,10 +1,10 @@
-#include "answer_json.hpp"
+#include "orthoray/answer_json.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <sstream>
 
-namespace orthoray::cli {
+namespace orthoray {
 namespace {
 
 std::string quoted(const char* text) {
@@ -36,6 +36,10 @@ void write_targets(std::ostream& out, const Answer& a) {
 
 } // namespace
 
+std::string engine_name(const Answer& answer, const std::string& asked) {
+    return answer.engine == EngineUsed::none ? asked : to_string(answer.engine);
+}
+
 std::string answer_json_members(const Answer& a, const std::string& engine, double seconds) {
     std::ostringstream out;
     out << "\"answer\":" << quoted(answer_word(a)) << ",\"reason\":" << quoted(to_string(a.reason));
@@ -61,4 +65,4 @@ std::string answer_json_members(const Answer& a, const std::string& engine, doub
     return out.str();
 }
 
-} // namespace orthoray::cli
+} // namespace orthoray

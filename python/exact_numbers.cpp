@@ -1,0 +1,63 @@
+#include "exact_numbers.hpp"
+
+#include "orthoray/parse.hpp"
+
+#include <string>
+
+namespace orthoray::python {
+
+py::int_ to_python(const Integer& value) {
+    const std::string digits = value.get_str();
+    return py::reinterpret_steal<py::int_>(PyLong_FromString(digits.c_str(), nullptr, 10));
+}
+
+py::object to_python(const Rational& value) {
+    static const py::object fraction = py::module_::import("fractions").attr("Fraction");
+    return fraction(to_python(Integer(value.get_num())), to_python(Integer(value.get_den())));
+}
+
+py::tuple to_python(const Vector& point, int dim) {
+    py::tuple out(static_cast<std::size_t>(dim));
+    for (int j = 0; j < dim; ++j) out[static_cast<std::size_t>(j)] = to_python(point[j]);
+    return out;
+}
+
+Rational rational_from(const py::handle& value, const char* what) {
+    if (py::isinstance<py::bool_>(value) || py::isinstance<py::float_>(value))
+        throw py::type_error(std::string(what) +
+                             ": expected an int, a fractions.Fraction or a string like '7/2'; "
+                             "floats are inexact, write 0.5 as Fraction(1, 2) or '0.5'");
+    if (py::isinstance<py::int_>(value))
+        return Rational(Integer(py::str(value).cast<std::string>(), 10));
+    if (py::hasattr(value, "numerator") && py::hasattr(value, "denominator")) {
+        Rational r(Integer(py::str(value.attr("numerator")).cast<std::string>(), 10),
+                   Integer(py::str(value.attr("denominator")).cast<std::string>(), 10));
+        r.canonicalize();
+        return r;
+    }
+    if (py::isinstance<py::str>(value)) {
+        const std::string text = value.cast<std::string>();
+        NumberToken n = read_number(text);
+        if (n.status != NumberToken::Status::ok)
+            throw py::value_error(std::string(what) + ": found '" + text +
+                                  "', expected a number (integer, fraction like 7/2, or "
+                                  "decimal like 0.125) with a nonzero denominator");
+        n.value.canonicalize();
+        return n.value;
+    }
+    throw py::type_error(std::string(what) +
+                         ": expected an int, a fractions.Fraction or a string like '7/2'");
+}
+
+Vector vector_from(const py::handle& values, int dim, const char* what) {
+    if (!py::isinstance<py::sequence>(values) || py::isinstance<py::str>(values) ||
+        static_cast<int>(py::len(values)) != dim)
+        throw py::value_error(std::string(what) + ": expected a sequence of " +
+                              std::to_string(dim) + " numbers");
+    const py::sequence items = py::reinterpret_borrow<py::sequence>(values);
+    Vector v;
+    for (int j = 0; j < dim; ++j) v[j] = rational_from(items[static_cast<std::size_t>(j)], what);
+    return v;
+}
+
+} // namespace orthoray::python

@@ -1,0 +1,25 @@
+#include "python_monitor.hpp"
+
+namespace orthoray::python {
+
+PythonMonitor::PythonMonitor(std::optional<double> timeout_seconds) {
+    if (timeout_seconds)
+        deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(*timeout_seconds));
+}
+
+std::optional<Limit> PythonMonitor::poll(std::uint64_t) {
+    const Clock::time_point now = Clock::now();
+    if (deadline_ && now >= *deadline_) return Limit::time;
+    if (now < next_check_) return std::nullopt;
+    next_check_ = now + std::chrono::milliseconds(10);
+    pybind11::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {
+        // The handler raised (KeyboardInterrupt): keep it for the caller.
+        interrupted_ = true;
+        return Limit::interrupt;
+    }
+    return std::nullopt;
+}
+
+} // namespace orthoray::python

@@ -1,0 +1,168 @@
+// orthoray.solve and orthoray.verify, and the Answer they return: the same
+// fields as `orthoray solve --json` (the library's answer_json, read back as
+// a dict, so the two front ends cannot differ), exact integers as Python
+// ints. Solving releases the GIL; Ctrl-C stops the run as a limit and then
+// raises KeyboardInterrupt carrying the partial answer.
+#include "bindings.hpp"
+#include "exact_numbers.hpp"
+#include "python_monitor.hpp"
+#include "solved_scene.hpp"
+
+#include "orthoray/answer_json.hpp"
+#include "orthoray/certificate.hpp"
+#include "orthoray/parse.hpp"
+
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace orthoray::python {
+namespace {
+
+const std::map<std::string, Engine> engines{{"auto", Engine::automatic},
+                                            {"lattice", Engine::lattice},
+                                            {"induction", Engine::induction},
+                                            {"reference", Engine::reference},
+                                            {"graph", Engine::graph}};
+
+Engine engine_from(const std::string& name) {
+    const auto it = engines.find(name);
+    if (it == engines.end())
+        throw py::value_error("engine: found '" + name +
+                              "', expected auto, lattice, induction, reference or graph");
+    return it->second;
+}
+
+// Writes the certificate to `path` through a temporary file renamed into
+// place, so a reader never sees half of one.
+class CertificateFile {
+public:
+    CertificateFile(const std::string& path, const Scene& scene, CertificateFormat format)
+        : path_(path), temporary_(path + ".partial"), out_(temporary_),
+          writer_(out_, scene, format) {
+        if (!out_) throw py::value_error("certificate: cannot write '" + temporary_ + "'");
+    }
+    ~CertificateFile() {
+        if (!committed_) std::remove(temporary_.c_str());
+    }
+    CertificateWriter& writer() { return writer_; }
+    void commit() {
+        out_.close();
+        if (!out_ || std::rename(temporary_.c_str(), path_.c_str()) != 0)
+            throw py::value_error("certificate: cannot write '" + path_ + "'");
+        committed_ = true;
+    }
+
+private:
+    std::string path_, temporary_;
+    std::ofstream out_;
+    CertificateWriter writer_;
+    bool committed_ = false;
+};
+
+SolvedScene solve_scene(const Scene& scene, const std::string& engine,
+                        std::optional<std::uint64_t> max_steps, std::optional<double> timeout,
+                        std::optional<std::string> certificate, const std::string& format) {
+    if (scene.rays.empty() || scene.targets.empty())
+        throw py::value_error("the scene needs at least one ray and one target");
+    SolveOptions options;
+    options.engine = engine_from(engine);
+    options.max_steps = max_steps;
+    PythonMonitor monitor(timeout);
+    options.monitor = &monitor;
+    std::optional<CertificateFile> file;
+    if (certificate) {
+        if (options.engine == Engine::graph)
+            throw py::value_error("certificate: the graph engine writes none; use another engine");
+        file.emplace(*certificate, scene,
+                     format == "jsonl" ? CertificateFormat::jsonl : CertificateFormat::text);
+        file->writer().attach(options);
+    }
+    const auto begin = std::chrono::steady_clock::now();
+    Answer answer;
+    {
+        py::gil_scoped_release released;
+        answer = solve(scene, options);
+        if (file) file->writer().finish(answer);
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (file) file->commit();
+    SolvedScene solved{
+        scene,   answer,
+        engine,  max_steps,
+        timeout, '{' + answer_json_members(answer, engine_name(answer, engine), seconds) + '}'};
+    if (monitor.interrupted()) {
+        PyErr_Clear();
+        py::object error = py::module_::import("builtins")
+                               .attr("KeyboardInterrupt")("orthoray: interrupted; the partial "
+                                                          "answer is this exception's .answer");
+        error.attr("answer") = py::cast(solved);
+        PyErr_SetObject(PyExc_KeyboardInterrupt, error.ptr());
+        throw py::error_already_set();
+    }
+    return solved;
+}
+
+} // namespace
+
+void bind_solve(py::module_& m) {
+    py::class_<SolvedScene>(m, "Answer",
+                            R"(What solve() found: the fields of `orthoray solve --json`.
+
+answer ('yes', 'no' or 'unknown'), reason, reflections (an exact int), and
+as they apply tail, period, limit, targets (the illumination question) and
+what ran (engine, arithmetic, ...). as_dict() gives them all; an answer
+shows its picture in a notebook.)")
+        .def("as_dict", [](const SolvedScene& s) { return s.fields(); })
+        .def("__getitem__",
+             [](const SolvedScene& s, const std::string& key) {
+                 const py::dict fields = s.fields();
+                 if (!fields.contains(key)) throw py::key_error(key);
+                 return fields[py::str(key)];
+             })
+        .def("__getattr__",
+             [](const SolvedScene& s, const std::string& key) -> py::object {
+                 const py::dict fields = s.fields();
+                 if (fields.contains(key)) return fields[py::str(key)];
+                 // tail, period, limit, targets when they do not apply
+                 static const char* optional[] = {"tail", "period", "limit", "targets"};
+                 for (const char* name : optional)
+                     if (key == name) return py::none();
+                 throw py::attribute_error("Answer has no field '" + key + "'");
+             })
+        .def_property_readonly("decided", [](const SolvedScene& s) { return s.answer.decided(); })
+        .def("svg", &SolvedScene::svg, "The scene and the path (or branches) as SVG.")
+        .def("_repr_svg_", &SolvedScene::svg)
+        .def("__repr__", [](const SolvedScene& s) { return "<orthoray.Answer " + s.json + ">"; });
+
+    m.def("solve", &solve_scene, py::arg("scene"), py::kw_only(), py::arg("engine") = "auto",
+          py::arg("max_steps") = py::none(), py::arg("timeout") = py::none(),
+          py::arg("certificate") = py::none(), py::arg("certificate_format") = "text",
+          R"(Decide the scene exactly, as `orthoray solve` does.
+
+engine: auto, lattice, induction, reference or graph. max_steps and timeout
+(seconds) end the run as a limit (answer 'unknown', reason 'limit'), with
+what was proven so far. certificate: a path to write the certificate to
+(certificate_format 'text' or 'jsonl'); verify() checks it.)");
+
+    m.def(
+        "verify",
+        [](const Scene& scene, const std::string& certificate) {
+            const std::unique_ptr<std::istream> in = open_file_stream(certificate);
+            Verdict verdict;
+            {
+                py::gil_scoped_release released;
+                verdict = verify_certificate(scene, *in, certificate);
+            }
+            return py::make_tuple(verdict.valid, verdict.message);
+        },
+        py::arg("scene"), py::arg("certificate"),
+        "Check a certificate file against the scene with the independent verifier: "
+        "(valid, message).");
+}
+
+} // namespace orthoray::python
