@@ -45,9 +45,9 @@ int run(const ConvertArgs& args, const CLI::Option* timeout) {
 Command add_convert(CLI::App& app) {
     auto args = std::make_shared<ConvertArgs>();
     CLI::App* cmd = app.add_subcommand(
-        "convert", "Convert a scene between the .scene text format and JSON, or a grid\n"
-                   "mirror maze (.grid, docs/grid-mazes.md) to its scene; nothing is\n"
-                   "rounded (JSON rationals are strings).\n\n"
+        "convert", "Convert a scene between the .scene text format and JSON, or a grid maze\n"
+                   "to its scene; nothing is rounded (JSON rationals are strings). Grid\n"
+                   "mirror mazes (.grid): docs/grid-mazes.md.\n\n"
                    "Example:\n"
                    "  orthoray convert instances/2d/box-corner-3x5.scene box.json\n"
                    "  orthoray convert box.json box.scene\n"
