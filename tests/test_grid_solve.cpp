@@ -388,3 +388,26 @@ TEST_CASE("solve answers a .grid file from the command line", "[grid][cli]") {
     CHECK(r.status == 1);
     CHECK(r.out.find("reason       escape\nreflections  3\n") != std::string::npos);
 }
+
+TEST_CASE("the certificates of a maze's answers verify against the .grid file", "[grid][cli]") {
+    TempDir dir;
+    const std::string maze = instance("grid/samsung-mirror-game-1.grid");
+    const std::string cert = dir.path("s1.cert");
+    CHECK(run_cli("solve --engine reference " + quote(maze) + " --certificate " + quote(cert))
+              .status == 1);
+    const CliResult valid = run_cli("verify " + quote(maze) + ' ' + quote(cert));
+    CHECK(valid.status == 0);
+    CHECK(valid.out == "valid: escape, 7 reflections\n");
+    // The same path does not fit another maze.
+    const CliResult other =
+        run_cli("verify " + quote(instance("grid/samsung-mirror-game-2.grid")) + ' ' + quote(cert));
+    CHECK(other.status == 1);
+    CHECK(other.out.rfind("invalid: ", 0) == 0);
+
+    const std::string example = instance("grid/example.grid");
+    const std::string lit = dir.path("example.cert");
+    CHECK(run_cli("solve " + quote(example) + " --certificate " + quote(lit)).status == 1);
+    const CliResult checked = run_cli("verify " + quote(example) + ' ' + quote(lit));
+    CHECK(checked.status == 0);
+    CHECK(checked.out == "valid: unlit, 3 reflections, 1 states\n");
+}
