@@ -41,6 +41,7 @@ std::vector<Subcommand> build_cli(CLI::App& app) {
         "3 a resource limit (steps, time, memory) or SIGINT/SIGTERM stopped the run first,\n"
         "4 an internal error, 5 an output could not be written (full disk, closed pipe).\n"
         "Scene formats and rules: docs/scene-format.md, docs/scene-json.md,\n"
+        "docs/grid-mazes.md (grid mirror mazes, .grid),\n"
         "docs/semantics.md. Pictures: docs/render.md. Each command's own help:\n"
         "orthoray COMMAND --help.");
     app.name("orthoray");

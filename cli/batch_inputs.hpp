@@ -10,7 +10,8 @@
 
 namespace orthoray::cli {
 
-// Whether `path` names an instance file by its ending: .scene or .json.
+// Whether `path` names an instance file by its ending: .scene, .json or
+// .grid (a grid maze, read as its scene).
 bool is_instance_file(const std::string& path);
 
 // Expands the INPUT arguments, in order: an instance file stands for

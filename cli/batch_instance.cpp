@@ -98,9 +98,7 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
         const ReadStopCheck stop_check(path, [&] {
             return InterruptGuard::requested() || (deadline && Clock::now() >= *deadline);
         });
-        scene = resolve_scene_format(path, scene_format_named(args_.format)) == SceneFormat::json
-                    ? read_scene_json(bytes, path)
-                    : read_scene(bytes, path);
+        scene = parse_scene(bytes, path, scene_format_named(args_.format));
     } catch (const InputError& e) {
         if (done(result_key(path, hash))) return {};
         return {Ending::bad_input, file_head(path, hash) + ",\"error\":" + json_string(e.what()) +

@@ -88,11 +88,13 @@ Numbers are exact: pass ints, fractions.Fraction or strings like '7/2'.)")
             [](const std::string& path, const std::string& format) {
                 const SceneFormat f = format == "json"    ? SceneFormat::json
                                       : format == "scene" ? SceneFormat::text
+                                      : format == "grid"  ? SceneFormat::grid
                                                           : SceneFormat::automatic;
                 return load_scene(path, f);
             },
             py::arg("path"), py::arg("format") = "auto",
-            "Read a .scene or JSON file ('-' is standard input); format 'auto' goes by the name.")
+            "Read a .scene or JSON file, or a grid maze (.grid, docs/grid-mazes.md) as its scene "
+            "('-' is standard input); format 'auto' goes by the name.")
         .def_static(
             "parse",
             [](const std::string& text, const std::string& name) { return read_scene(text, name); },

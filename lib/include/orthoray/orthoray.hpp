@@ -9,6 +9,7 @@
 #include "orthoray/certificate.hpp" // writing, reading and verifying certificates
 #include "orthoray/exchange.hpp"    // the interval exchange of a 2D scene, and its induction
 #include "orthoray/generate.hpp"    // instance families
+#include "orthoray/grid.hpp"        // grid mirror mazes (.grid) and their scenes
 #include "orthoray/number.hpp"      // exact integers and rationals
 #include "orthoray/parse.hpp"       // reading scene files
 #include "orthoray/pieces.hpp"      // the 2D piece tables, printable

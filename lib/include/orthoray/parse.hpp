@@ -84,13 +84,17 @@ std::string read_file(const std::string& path);
 std::unique_ptr<std::istream> open_file_stream(const std::string& path);
 
 enum class SceneFormat {
-    automatic, // by the file name: JSON when it ends in .json, .scene text otherwise
+    automatic, // by the file name: JSON for .json, a grid maze for .grid, .scene text otherwise
     text,      // the .scene format (docs/scene-format.md)
     json,      // the JSON scene format (docs/scene-json.md)
+    grid,      // a grid mirror maze, read as its scene (docs/grid-mazes.md); read only
 };
 
 // `requested`, or for automatic the format the name of `path` implies.
 SceneFormat resolve_scene_format(const std::string& path, SceneFormat requested);
+
+// Parses `text` in the given format (automatic: as the name `file` implies).
+Scene parse_scene(std::string_view text, const std::string& file, SceneFormat format);
 
 // Reads the file at `path` in the given format. Every command that takes a
 // scene reads it through here, so each accepts both formats.

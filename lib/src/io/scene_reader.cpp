@@ -4,6 +4,8 @@
 // the offending token (or of the end of the line when a token is missing).
 #include "orthoray/parse.hpp"
 
+#include "orthoray/grid.hpp"
+
 #include "io/quoted_token.hpp"
 
 #include <algorithm>
@@ -319,13 +321,24 @@ Scene read_scene(std::string_view text, const std::string& file) {
 SceneFormat resolve_scene_format(const std::string& path, SceneFormat requested) {
     if (requested != SceneFormat::automatic) return requested;
     const std::string extension = std::filesystem::path(path).extension().string();
-    return extension == ".json" || extension == ".JSON" ? SceneFormat::json : SceneFormat::text;
+    if (extension == ".json" || extension == ".JSON") return SceneFormat::json;
+    if (extension == ".grid" || extension == ".GRID") return SceneFormat::grid;
+    return SceneFormat::text;
+}
+
+Scene parse_scene(std::string_view text, const std::string& file, SceneFormat format) {
+    switch (resolve_scene_format(file, format)) {
+    case SceneFormat::json:
+        return read_scene_json(text, file);
+    case SceneFormat::grid:
+        return grid_scene(read_grid_maze(text, file));
+    default:
+        return read_scene(text, file);
+    }
 }
 
 Scene load_scene(const std::string& path, SceneFormat format) {
-    const std::string text = read_file(path);
-    return resolve_scene_format(path, format) == SceneFormat::json ? read_scene_json(text, path)
-                                                                   : read_scene(text, path);
+    return parse_scene(read_file(path), path, format);
 }
 
 } // namespace orthoray
