@@ -60,6 +60,9 @@ std::string draw(const Scene& scene, SolveOptions options, const Answer& decided
 py::dict bounds_dict(const StateBounds& b) {
     py::dict d;
     d["dim"] = b.dim;
+    d["octagonal"] = b.octagonal;
+    d["directions"] = b.directions;
+    d["rays"] = b.rays;
     d["elements"] = b.elements;
     d["input_bits"] = b.input_bits;
     d["state_bits"] = b.state_bits;
