@@ -7,6 +7,7 @@
 #include "orthoray/puzzle.hpp"
 
 #include "io/quoted_token.hpp"
+#include "io/text_line.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -15,10 +16,7 @@
 namespace orthoray {
 namespace {
 
-struct Token {
-    std::string_view text;
-    int column;
-};
+using io::Token;
 
 std::string quoted(std::string_view text) {
     return io::quoted_token(text);
@@ -116,29 +114,11 @@ private:
     void read_line(std::string_view line, int line_number) {
         line_ = line_number;
         const std::size_t comment = line.find('#');
-        for (std::size_t i = 0; i < line.size(); ++i) {
-            const auto c = static_cast<unsigned char>(line[i]);
-            const bool control = (c < 0x20 && c != '\t') || c == 0x7f;
-            const bool foreign = c >= 0x80 && i < comment; // UTF-8 is fine inside comments
-            if (control || foreign) {
-                char buf[64];
-                std::snprintf(buf, sizeof buf, "found byte 0x%02X, expected plain ASCII text", c);
-                fail(static_cast<int>(i) + 1, buf);
-            }
-        }
+        if (const std::optional<io::BadByte> bad = io::find_bad_byte(line, comment))
+            fail(bad->column, bad->message);
         const std::string_view code = line.substr(0, comment);
-        tokens_.clear();
+        io::split_tokens(code, tokens_);
         next_ = 0;
-        for (std::size_t i = 0; i < code.size();) {
-            if (code[i] == ' ' || code[i] == '\t') {
-                ++i;
-                continue;
-            }
-            std::size_t j = i;
-            while (j < code.size() && code[j] != ' ' && code[j] != '\t') ++j;
-            tokens_.push_back({code.substr(i, j - i), static_cast<int>(i) + 1});
-            i = j;
-        }
         end_column_ = static_cast<int>(code.size()) + 1;
         if (tokens_.empty()) return;
         if (in_grid_)
