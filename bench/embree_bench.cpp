@@ -6,6 +6,8 @@
 #include "orthoray_bench.hpp"
 
 #include <cstdio>
+#include <functional>
+#include <string>
 
 #ifdef ORTHORAY_BENCH_EMBREE
 #include "bench_util.hpp"
@@ -30,6 +32,9 @@ namespace orthoray::bench {
 int embree_baseline(const Options&) {
     std::printf("## Embree baseline\n\nSkipped: CMake did not find Embree 3 when this program "
                 "was built (install libembree-dev and reconfigure).\n\n");
+    return 0;
+}
+int embree_smoke(const std::function<void(const std::string&)>&) {
     return 0;
 }
 #else
@@ -211,6 +216,31 @@ int embree_baseline(const Options& o) {
         }
     div.print();
     return failures;
+}
+
+int embree_smoke(const std::function<void(const std::string&)>& fail) {
+    int compared = 0;
+    for (int dim : {2, 3}) {
+        const Scene scene = random_box(dim, 1000, 1000 * static_cast<std::uint64_t>(dim) + 1);
+        PathRecorder path;
+        SolveOptions options;
+        options.engine = Engine::lattice;
+        options.max_steps = 20'000;
+        options.path = &path;
+        solve(scene, options);
+        for (bool robust : {false, true}) {
+            const Divergence d = diverge(scene, path.points, robust);
+            ++compared;
+            const std::string what = "Embree" + std::string(robust ? " robust" : "") +
+                                     " on random " + std::to_string(dim) + "D n=1000: ";
+            if (d.compared != 20'000 || d.leak || d.false_hit)
+                fail(what + "stopped after " + std::to_string(d.compared) +
+                     " of 20000 reflections");
+            if (d.first_wrong != 0 && d.first_wrong <= 10)
+                fail(what + "left the exact path at reflection " + std::to_string(d.first_wrong));
+        }
+    }
+    return compared;
 }
 #endif
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #ifndef ORTHORAY_BENCH_DIR
@@ -36,6 +37,11 @@ int disagreements(const Options& o);
 // Embree's speed and path against the exact engine's (embree_bench.cpp); a
 // message only when CMake did not find Embree.
 int embree_baseline(const Options& o);
+// The Embree part of bench_smoke: Embree (both scene flags) runs random boxes
+// to the cap without leaking and follows the exact path for its first
+// reflections. Calls `fail` for each problem and returns the scenes compared
+// (0 without Embree).
+int embree_smoke(const std::function<void(const std::string&)>& fail);
 // The ctest bench_smoke check (smoke.cpp): quick, and fails on a real problem.
 int smoke();
 
