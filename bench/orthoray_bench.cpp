@@ -5,7 +5,8 @@
 // a full run are in bench/RESULTS.md.
 //
 // The parts: throughput.cpp (throughput, preprocessing, memory, the long
-// run), disagreement.cpp (float against exact), smoke.cpp (the ctest
+// run), disagreement.cpp (float against exact), embree_bench.cpp (the
+// Embree baseline), smoke.cpp (the ctest
 // check); every measurement runs in a forked child (child_process.hpp).
 // This file parses the options (CLI11) and runs the parts asked for.
 #include "orthoray_bench.hpp"
@@ -70,7 +71,7 @@ Options parse(int argc, char** argv) {
     app.add_flag("--quick", o.quick, "the whole program in about a minute");
     app.add_flag("--smoke", o.smoke, "the ctest bench_smoke check; prints one line");
     app.add_option("--mode", o.mode, "one part only (default all)")
-        ->check(CLI::IsMember({"all", "throughput", "disagree", "billion"}));
+        ->check(CLI::IsMember({"all", "throughput", "disagree", "billion", "embree"}));
     app.add_option("--csv", o.csv,
                    "also write the tables as CSV (FILE, FILE-billion.csv, "
                    "FILE-disagreement.csv)");
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
         if (all || o.mode == "throughput") failures += throughput(o);
         if (all || o.mode == "billion") failures += billion(o);
         if (all || o.mode == "disagree") failures += disagreements(o);
+        if (all || o.mode == "embree") failures += embree_baseline(o);
         std::printf("Load average at the end: %s.\n", load_average().c_str());
         return failures == 0 ? 0 : 1;
     } catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #ifndef ORTHORAY_BENCH_DIR
@@ -14,7 +15,7 @@ namespace orthoray::bench {
 
 struct Options {
     bool quick = false, smoke = false;
-    std::string mode = "all"; // all, throughput, disagree, billion
+    std::string mode = "all"; // all, throughput, disagree, billion, embree
     std::string csv;          // throughput table; -disagreement / -billion next to it
     std::string write_scenes; // a directory to write the benchmark scenes to, as .scene files
     std::string wrong_scene = std::string(ORTHORAY_BENCH_DIR) + "/float-wrong.scene";
@@ -33,6 +34,14 @@ int billion(const Options& o);
 int write_scenes(const std::string& dir);
 // Float against exact on random scenes (disagreement.cpp).
 int disagreements(const Options& o);
+// Embree's speed and path against the exact engine's (embree_bench.cpp); a
+// message only when CMake did not find Embree.
+int embree_baseline(const Options& o);
+// The Embree part of bench_smoke: Embree (both scene flags) runs random boxes
+// to the cap without leaking and follows the exact path for its first
+// reflections. Calls `fail` for each problem and returns the scenes compared
+// (0 without Embree).
+int embree_smoke(const std::function<void(const std::string&)>& fail);
 // The ctest bench_smoke check (smoke.cpp): quick, and fails on a real problem.
 int smoke();
 
