@@ -45,7 +45,12 @@ void read_manifest(std::istream& in, std::vector<std::string>& out) {
 } // namespace
 
 bool is_instance_file(const std::string& path) {
-    return ends_with(path, ".scene") || ends_with(path, ".json") || ends_with(path, ".grid");
+    return ends_with(path, ".scene") || ends_with(path, ".json") || ends_with(path, ".grid") ||
+           is_level_file(path);
+}
+
+bool is_level_file(const std::string& path) {
+    return ends_with(path, ".bff");
 }
 
 std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {

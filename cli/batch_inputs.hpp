@@ -10,9 +10,12 @@
 
 namespace orthoray::cli {
 
-// Whether `path` names an instance file by its ending: .scene, .json or
-// .grid (a grid maze, read as its scene).
+// Whether `path` names an instance file by its ending: .scene, .json,
+// .grid (a grid maze, read as its scene) or .bff (a Lazor level).
 bool is_instance_file(const std::string& path);
+
+// Whether `path` names a Lazor level (.bff), decided by the placement search.
+bool is_level_file(const std::string& path);
 
 // Expands the INPUT arguments, in order: an instance file stands for
 // itself; a directory for every instance file below it, in byte order of

@@ -1,5 +1,7 @@
 #include "batch_instance.hpp"
 
+#include "batch_inputs.hpp"
+#include "batch_level.hpp"
 #include "batch_results.hpp"
 #include "commands.hpp"
 #include "orthoray/answer_json.hpp"
@@ -91,6 +93,7 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
     // unreadable, so --resume does not retry it while it stays so.
     std::string hash = "unreadable";
     Scene scene;
+    std::optional<LazorLevel> level;
     try {
         const std::string bytes = read_file(path);
         hash = content_hash(bytes);
@@ -98,7 +101,11 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
         const ReadStopCheck stop_check(path, [&] {
             return InterruptGuard::requested() || (deadline && Clock::now() >= *deadline);
         });
-        scene = parse_scene(bytes, path, scene_format_named(args_.format));
+        // A .bff is a level whatever --format says: --format names a scene syntax.
+        if (is_level_file(path))
+            level = read_lazor_level(bytes, path);
+        else
+            scene = parse_scene(bytes, path, scene_format_named(args_.format));
     } catch (const InputError& e) {
         if (done(result_key(path, hash))) return {};
         return {Ending::bad_input, file_head(path, hash) + ",\"error\":" + json_string(e.what()) +
@@ -110,6 +117,7 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
         return finish(file_head(path, hash), stopped_by(Limit::memory), args_.choices.engine,
                       begin);
     }
+    if (level) return decide_level(*level, file_head(path, hash), args_, begin);
     return solve_scene(scene, file_head(path, hash),
                        std::filesystem::path(path).filename().string() + '.' + hash, begin);
 }

@@ -7,17 +7,15 @@
 #include "orthoray/render.hpp"
 #include "orthoray/solve.hpp"
 #include "output_file.hpp"
+#include "puzzle_json.hpp"
 #include "run_monitor.hpp"
-
-#include <nlohmann/json.hpp>
+#include "stop_watcher.hpp"
 
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -34,82 +32,8 @@ struct PuzzleSolveArgs {
 
 using Clock = std::chrono::steady_clock;
 
-// Sets `stop` once the deadline passes or SIGINT/SIGTERM arrives, checking
-// every few milliseconds, until the search is over (then it wakes at once).
-class StopWatcher {
-public:
-    StopWatcher(std::atomic<bool>& stop, std::optional<Clock::time_point> deadline)
-        : thread_([this, &stop, deadline] {
-              std::unique_lock lock(mutex_);
-              while (!done_) {
-                  if (InterruptGuard::requested()) {
-                      interrupted_ = true;
-                      stop = true;
-                  } else if (deadline && Clock::now() >= *deadline) {
-                      stop = true;
-                  }
-                  wake_.wait_for(lock, std::chrono::milliseconds(5));
-              }
-          }) {}
-    ~StopWatcher() {
-        {
-            const std::lock_guard lock(mutex_);
-            done_ = true;
-        }
-        wake_.notify_one();
-        thread_.join();
-    }
-    StopWatcher(const StopWatcher&) = delete;
-    StopWatcher& operator=(const StopWatcher&) = delete;
-    bool interrupted() const { return interrupted_.load(); }
-
-private:
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    bool done_ = false;
-    std::atomic<bool> interrupted_{false};
-    std::thread thread_;
-};
-
-const char* answer_word(LazorSolution::Status status) {
-    switch (status) {
-    case LazorSolution::Status::solved:
-        return "solved";
-    case LazorSolution::Status::unsolvable:
-        return "unsolvable";
-    case LazorSolution::Status::limit:
-        break;
-    }
-    return "unknown";
-}
-
 void print_json(const LazorSolution& s, const std::string& limit, unsigned jobs, double seconds) {
-    nlohmann::json grid = nlohmann::json::array();
-    if (s.placed)
-        for (int row = 0; row < s.placed->height; ++row) {
-            std::string text;
-            for (int column = 0; column < s.placed->width; ++column)
-                text += std::string(column ? " " : "") + lazor_letter(s.placed->at(column, row));
-            grid.push_back(text);
-        }
-    std::cout << "{\"answer\":" << nlohmann::json(answer_word(s.status)).dump();
-    if (s.status == LazorSolution::Status::limit)
-        std::cout << ",\"limit\":" << nlohmann::json(limit).dump();
-    if (s.placed) std::cout << ",\"grid\":" << grid.dump();
-    if (!s.points.empty()) {
-        nlohmann::ordered_json points = nlohmann::ordered_json::array();
-        for (std::size_t i = 0; i < s.points.size(); ++i)
-            points.push_back({{"point", i + 1},
-                              {"x", s.placed->points[i].x},
-                              {"y", s.placed->points[i].y},
-                              {"laser", s.points[i].ray},
-                              {"reflections", s.points[i].reflections.get_ui()}});
-        std::cout << ",\"points\":" << points.dump();
-    }
-    // An exact integer, printed in full.
-    if (!s.solutions.empty()) std::cout << ",\"solutions\":" << s.solutions;
-    std::cout << ",\"nodes\":" << s.nodes << ",\"jobs\":" << jobs
-              << ",\"seconds\":" << nlohmann::json(seconds).dump() << "}\n";
+    std::cout << '{' << lazor_json_members(s, limit, jobs, seconds) << "}\n";
 }
 
 void print_text(const LazorSolution& s, const std::string& limit, double seconds) {
@@ -118,7 +42,7 @@ void print_text(const LazorSolution& s, const std::string& limit, double seconds
         std::printf("point %zu (%d, %d)  lit by laser %zu after %s reflections\n", i + 1,
                     s.placed->points[i].x, s.placed->points[i].y, s.points[i].ray,
                     s.points[i].reflections.get_str().c_str());
-    std::printf("answer       %s\n", answer_word(s.status));
+    std::printf("answer       %s\n", lazor_answer_word(s.status));
     if (s.status == LazorSolution::Status::limit)
         std::printf("reason       limit (%s)\n", limit == "time"    ? "--timeout reached"
                                                  : limit == "nodes" ? "--max-nodes reached"
