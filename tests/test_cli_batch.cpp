@@ -1,6 +1,7 @@
 // orthoray batch: every instance decided as `solve` decides it, bad files as
 // results, nothing lost or torn when killed, --resume finishing the work
 // (docs/batch.md).
+#include "support/lazor_levels.hpp"
 #include "support/portable_random.hpp"
 #include "support/run_cli.hpp"
 #include "support/spawn_cli.hpp"
@@ -281,6 +282,63 @@ TEST_CASE("batch --certificates writes one certificate an instance, each valid",
         std::istringstream in(slurp(cert));
         CHECK(verify_certificate(load_scene(path), in, cert).valid);
     }
+}
+
+TEST_CASE("batch decides Lazor levels as puzzle solve --json does, bad ones as errors",
+          "[batch][cli][puzzle]") {
+    const auto folder = lazor_folder();
+    if (!folder) {
+        WARN("../shared/puzzles/lazor is absent beside the source tree: levels skipped");
+        return;
+    }
+    const TempDir dir;
+    fs::create_directories(dir.path("levels/public"));
+    fs::create_directory(dir.path("certs"));
+    const std::vector<std::string> levels{
+        dir.write("levels/public/braid_1.bff", slurp((*folder / "braid_1.bff").string())),
+        dir.write("levels/public/unit_test_3x3.bff",
+                  slurp((*folder / "cganley2-unit_test_3x3.bff").string())),
+        dir.write("levels/unsolvable.bff",
+                  slurp((*folder / "unsolvable/404NotFound25fall-mini_test.bff").string())),
+        dir.write("levels/malformed.bff", slurp((*folder / "malformed/grid_1.bff").string()))};
+    // A grid maze beside them is still read as its scene.
+    const std::string maze = dir.write("levels/maze.grid", slurp(instance("grid/example.grid")));
+    const std::string out = dir.path("r.jsonl");
+    const std::string command = "batch " + quote(dir.path("levels")) + " --jobs 2 -o " +
+                                quote(out) + " --certificates " + quote(dir.path("certs"));
+    const CliResult run = run_cli(command);
+    CHECK(run.status == 1); // every instance has its line, one of them an error
+    CHECK(run.err.find("2 yes, 2 no, 1 bad input, 0 at a limit") != std::string::npos);
+    const Results results = read_results(slurp(out));
+    CHECK(results.torn == 0);
+    REQUIRE(results.lines.size() == 5);
+    std::map<std::string, json> by_path;
+    for (const json& line : results.lines) by_path[line["path"]] = line;
+    CHECK(by_path[maze].contains("reason"));
+    for (const std::string& level : levels) {
+        CAPTURE(level);
+        const json& line = by_path[level];
+        CHECK(line["hash"].get<std::string>().size() == 16);
+        const CliResult solve = run_cli("puzzle solve --json --jobs 1 " + quote(level));
+        if (solve.status == 2) {
+            CHECK(line["error"].get<std::string>() + '\n' == solve.err);
+            CHECK(line["status"] == 2);
+            continue;
+        }
+        json expected = json::parse(solve.out);
+        expected["status"] = solve.status;
+        CHECK(answer_of(line) == answer_of(expected));
+    }
+    CHECK(by_path[levels[0]]["answer"] == "solved");
+    CHECK(by_path[levels[2]]["status"] == 1);
+    // A level has no certificate; only the maze's was written.
+    CHECK(std::distance(fs::directory_iterator(dir.path("certs")), fs::directory_iterator()) == 1);
+
+    const std::string first = slurp(out);
+    const CliResult again = run_cli(command + " --resume");
+    CHECK(again.status == 0);
+    CHECK(again.err.find("5 already in the results") != std::string::npos);
+    CHECK(slurp(out) == first);
 }
 
 TEST_CASE("batch refuses what it cannot do, before deciding anything", "[batch][cli]") {
