@@ -339,6 +339,18 @@ TEST_CASE("batch decides Lazor levels as puzzle solve --json does, bad ones as e
     CHECK(again.status == 0);
     CHECK(again.err.find("5 already in the results") != std::string::npos);
     CHECK(slurp(out) == first);
+
+    // --max-steps caps a level's search nodes, as puzzle solve --max-nodes does.
+    const CliResult capped = run_cli("batch " + quote(levels[0]) + " --max-steps 1");
+    CHECK(capped.status == 1);
+    const Results capped_lines = read_results(capped.out);
+    REQUIRE(capped_lines.lines.size() == 1);
+    const CliResult nodes =
+        run_cli("puzzle solve --json --jobs 1 --max-nodes 1 " + quote(levels[0]));
+    json expected = json::parse(nodes.out);
+    expected["status"] = nodes.status;
+    CHECK(answer_of(capped_lines.lines[0]) == answer_of(expected));
+    CHECK(capped_lines.lines[0]["limit"] == "nodes");
 }
 
 TEST_CASE("batch refuses what it cannot do, before deciding anything", "[batch][cli]") {
