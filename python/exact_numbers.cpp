@@ -6,13 +6,35 @@
 
 namespace orthoray::python {
 
+// Through hexadecimal: Python limits decimal conversions of ints to 4300
+// digits (int_max_str_digits), but not those in a power-of-two base.
 py::int_ to_python(const Integer& value) {
-    const std::string digits = value.get_str();
-    return py::reinterpret_steal<py::int_>(PyLong_FromString(digits.c_str(), nullptr, 10));
+    const std::string digits = value.get_str(16);
+    PyObject* result = PyLong_FromString(digits.c_str(), nullptr, 16);
+    if (!result) throw py::error_already_set();
+    return py::reinterpret_steal<py::int_>(result);
 }
 
+namespace {
+
+// A Python int as an Integer, through hex() for the same reason.
+Integer integer_from(const py::handle& value) {
+    // Looked up once and never released: a static py::object would be
+    // destroyed after the interpreter, at exit.
+    static const py::object& hex = *new py::object(py::module_::import("builtins").attr("hex"));
+    std::string text = hex(value).cast<std::string>(); // "0x1f" or "-0x1f"
+    const bool negative = text.starts_with('-');
+    Integer magnitude(text.substr(negative ? 3 : 2), 16);
+    return negative ? Integer(-magnitude) : magnitude;
+}
+
+} // namespace
+
 py::object to_python(const Rational& value) {
-    static const py::object fraction = py::module_::import("fractions").attr("Fraction");
+    // Looked up once and never released: a static py::object would be
+    // destroyed after the interpreter, at exit.
+    static const py::object& fraction =
+        *new py::object(py::module_::import("fractions").attr("Fraction"));
     return fraction(to_python(Integer(value.get_num())), to_python(Integer(value.get_den())));
 }
 
@@ -27,11 +49,15 @@ Rational rational_from(const py::handle& value, const char* what) {
         throw py::type_error(std::string(what) +
                              ": expected an int, a fractions.Fraction or a string like '7/2'; "
                              "floats are inexact, write 0.5 as Fraction(1, 2) or '0.5'");
-    if (py::isinstance<py::int_>(value))
-        return Rational(Integer(py::str(value).cast<std::string>(), 10));
+    if (py::isinstance<py::int_>(value)) return Rational(integer_from(value));
     if (py::hasattr(value, "numerator") && py::hasattr(value, "denominator")) {
-        Rational r(Integer(py::str(value.attr("numerator")).cast<std::string>(), 10),
-                   Integer(py::str(value.attr("denominator")).cast<std::string>(), 10));
+        const py::object numerator = value.attr("numerator"),
+                         denominator = value.attr("denominator");
+        if (!py::isinstance<py::int_>(numerator) || !py::isinstance<py::int_>(denominator))
+            throw py::type_error(std::string(what) + ": expected a rational with int parts");
+        const Integer d = integer_from(denominator);
+        if (d == 0) throw py::value_error(std::string(what) + ": a zero denominator");
+        Rational r(integer_from(numerator), d);
         r.canonicalize();
         return r;
     }

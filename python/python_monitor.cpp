@@ -3,6 +3,9 @@
 namespace orthoray::python {
 
 PythonMonitor::PythonMonitor(std::optional<double> timeout_seconds) {
+    // Finite and at most about 30 years, so the deadline cannot overflow.
+    if (timeout_seconds && !(*timeout_seconds >= 0 && *timeout_seconds <= 1e9))
+        throw pybind11::value_error("timeout: expected a number of seconds from 0 to 1e9");
     if (timeout_seconds)
         deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double>(*timeout_seconds));

@@ -21,6 +21,11 @@ public:
     // Whether the run stopped because Python had a signal pending (its error
     // is then set again, for the caller to raise).
     bool interrupted() const { return interrupted_; }
+    // With the GIL held, after the run: raises the pending KeyboardInterrupt
+    // if the run was stopped by one.
+    void raise_if_interrupted() const {
+        if (interrupted_) throw pybind11::error_already_set();
+    }
 
 private:
     using Clock = std::chrono::steady_clock;

@@ -68,6 +68,11 @@ std::string scene_svg(const Scene& scene) {
 
 } // namespace
 
+void require_ray_and_target(const Scene& scene) {
+    if (scene.rays.empty() || scene.targets.empty())
+        throw py::value_error("the scene needs at least one ray and one target");
+}
+
 void bind_scene(py::module_& m) {
     py::class_<Scene>(m, "Scene", R"(A scene: elements, rays and targets (docs/scene-format.md).
 

@@ -63,11 +63,12 @@ private:
     bool committed_ = false;
 };
 
-SolvedScene solve_scene(const Scene& scene, const std::string& engine,
+// `scene` is a copy: the run goes on without the GIL, while another Python
+// thread may change the caller's Scene.
+SolvedScene solve_scene(Scene scene, const std::string& engine,
                         std::optional<std::uint64_t> max_steps, std::optional<double> timeout,
                         std::optional<std::string> certificate, const std::string& format) {
-    if (scene.rays.empty() || scene.targets.empty())
-        throw py::value_error("the scene needs at least one ray and one target");
+    require_ray_and_target(scene);
     SolveOptions options;
     options.engine = engine_from(engine);
     options.max_steps = max_steps;
@@ -151,7 +152,8 @@ what was proven so far. certificate: a path to write the certificate to
 
     m.def(
         "verify",
-        [](const Scene& scene, const std::string& certificate) {
+        [](Scene scene, const std::string& certificate) { // a copy: the GIL is released
+            require_ray_and_target(scene);
             const std::unique_ptr<std::istream> in = open_file_stream(certificate);
             Verdict verdict;
             {

@@ -76,7 +76,9 @@ py::dict bounds_dict(const StateBounds& b) {
 } // namespace
 
 py::dict SolvedScene::fields() const {
-    static const py::object loads = py::module_::import("json").attr("loads");
+    // Looked up once and never released: a static py::object would be
+    // destroyed after the interpreter, at exit.
+    static const py::object& loads = *new py::object(py::module_::import("json").attr("loads"));
     return loads(json);
 }
 
@@ -85,20 +87,32 @@ std::string SolvedScene::svg() const {
     options.engine = Engine::automatic;
     PythonMonitor monitor(timeout);
     options.monitor = &monitor;
-    py::gil_scoped_release released;
-    return draw(scene, options, answer, max_steps.value_or(100'000));
+    std::string picture;
+    {
+        py::gil_scoped_release released;
+        picture = draw(scene, options, answer, max_steps.value_or(100'000));
+    }
+    monitor.raise_if_interrupted();
+    return picture;
 }
 
 void bind_tools(py::module_& m) {
     m.def(
         "render",
-        [](const Scene& scene, std::uint64_t max_path, std::optional<double> timeout) {
+        [](Scene scene, std::uint64_t max_path, std::optional<double> timeout) {
+            // A copy, run without the GIL: another thread may change the original.
+            require_ray_and_target(scene);
             SolveOptions options;
             PythonMonitor monitor(timeout);
             options.monitor = &monitor;
-            py::gil_scoped_release released;
-            const Answer decided = solve(scene, options);
-            return draw(scene, options, decided, max_path);
+            std::string picture;
+            {
+                py::gil_scoped_release released;
+                const Answer decided = solve(scene, options);
+                picture = draw(scene, options, decided, max_path);
+            }
+            monitor.raise_if_interrupted();
+            return picture;
         },
         py::arg("scene"), py::kw_only(), py::arg("max_path") = 100'000,
         py::arg("timeout") = py::none(),
@@ -107,10 +121,13 @@ void bind_tools(py::module_& m) {
 
     m.def(
         "bounds",
-        [](const Scene& scene) {
-            py::gil_scoped_release released;
-            const StateBounds b = compute_bounds(scene);
-            py::gil_scoped_acquire held;
+        [](Scene scene) { // a copy, run without the GIL
+            require_ray_and_target(scene);
+            StateBounds b;
+            {
+                py::gil_scoped_release released;
+                b = compute_bounds(scene);
+            }
             return bounds_dict(b);
         },
         py::arg("scene"),

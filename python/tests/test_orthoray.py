@@ -172,3 +172,33 @@ def test_version_and_build_info():
     info = orthoray.build_info()
     assert info["orthoray"] == orthoray.__version__
     assert set(info) >= {"gmp", "boost", "compiler"}
+
+
+def test_ints_beyond_python_decimal_conversion_limit():
+    # Python refuses decimal int<->str conversions over 4300 digits; the
+    # module converts through hexadecimal, so coordinates of any size pass.
+    big = 10**5000 + 1
+    scene = orthoray.Scene(2)
+    scene.add("mirror", "x", big, [(0, 1)])
+    scene.add_ray((0, 0), (1, 0))
+    scene.add_target((big, 0))
+    assert scene.elements[0]["offset"] == big
+    answer = orthoray.solve(scene)
+    assert (answer.answer, answer.reflections) == ("yes", 0)
+
+
+def test_malformed_numbers_and_options_are_value_errors():
+    class Broken:
+        numerator = 1
+        denominator = 0
+    scene = orthoray.Scene(2)
+    with pytest.raises(ValueError, match="zero denominator"):
+        scene.add_target((Broken(), 0))
+    with pytest.raises(ValueError, match="ray and one target"):
+        orthoray.render(scene)
+    with pytest.raises(ValueError, match="ray and one target"):
+        orthoray.bounds(scene)
+    box = orthoray.generate_box([3, 5])
+    with pytest.raises(ValueError, match="timeout"):
+        orthoray.solve(box, timeout=float("nan"))
+    assert "<svg" in scene.svg()  # a scene with no ray still draws
