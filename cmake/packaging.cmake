@@ -20,5 +20,5 @@ set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/orthoray")
 # Written out rather than found by dpkg-shlibdeps, which lives in dpkg-dev, a
 # package a fresh machine need not have.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.34), libstdc++6 (>= 12), libgmp10, libgmpxx4ldbl")
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libgmp-dev, librsvg2-bin")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libgmp-dev, librsvg2-bin, python3")
 include(CPack)

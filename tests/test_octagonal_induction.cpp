@@ -324,3 +324,22 @@ TEST_CASE("the default engine simulates a short octagonal orbit and induces a lo
     CHECK(a.reason == Reason::limit);
     CHECK(a.reflections == 1000);
 }
+
+TEST_CASE("induction honours --max-steps where the octagonal simulation would stop",
+          "[octagonal][induction]") {
+    // Period 2 * 8501 = 17002: Brent's detector, which every simulation of
+    // a diagonal scene runs, sees it at reflection 2^15 + 17002 = 49770.
+    Scene s = diamond(Integer(1000));
+    shoot(s, Rational(1, 2), Rational(1, 2), 1, 8501);
+    for (const std::uint64_t cap : {20000u, 49769u, 49770u, 60000u}) {
+        INFO("cap " << cap);
+        SolveOptions induced, simulated;
+        induced.engine = Engine::induction;
+        simulated.engine = Engine::lattice;
+        induced.max_steps = simulated.max_steps = cap;
+        const Answer a = solve(s, induced), b = solve(s, simulated);
+        CHECK(a.reason == b.reason);
+        CHECK(a.reflections == b.reflections);
+        CHECK(a.reason == (cap >= 49770 ? Reason::cycle : Reason::limit));
+    }
+}

@@ -1,5 +1,7 @@
 #include "induction/octagonal_induction.hpp"
 
+#include "engine/cycle_detector.hpp"
+
 #include "engine/reference_tracer.hpp"
 #include "induction/induction_engine.hpp"
 #include "induction/octagonal_exchange.hpp"
@@ -141,9 +143,17 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
         if (half->event == ExchangeEvent::hit) answer.reflections = half->offset;
     }
     if (options.max_steps) {
-        // As a simulation would: it notices a cycle one reflection after the period.
-        const Integer needed =
-            answer.reflections + (answer.reason == Reason::cycle ? Integer(1) : Integer(0));
+        // As a simulation would: on diagonal scenes every simulation runs
+        // Brent's detector (engine::may_have_tail), which notices a cycle of
+        // period p, entered at state 1, at reflection 2^k + p (2^k >= p),
+        // as the graph engine reports it too. Past 2^62 that is beyond any
+        // cap anyway.
+        Integer needed = answer.reflections;
+        if (answer.reason == Reason::cycle)
+            needed = answer.reflections < (Integer(1) << 62)
+                         ? Integer(static_cast<unsigned long>(
+                               engine::brent_detection(1, answer.reflections.get_ui())))
+                         : Integer(answer.reflections * 2);
         const Integer cap(static_cast<unsigned long>(*options.max_steps));
         if (needed > cap) {
             answer.reason = Reason::limit;
