@@ -142,7 +142,7 @@ Answer decide(const Scene& scene, const RenderArgs& args) {
     SolveMonitor progress(scene, SolveMonitor::Clock::now() + decide_budget, !args.quiet);
     SolveOptions options;
     options.monitor = &progress;
-    const Answer answer = solve(scene, options);
+    Answer answer = solve(scene, options);
     progress.erase_progress();
     return answer;
 }
