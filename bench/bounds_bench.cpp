@@ -11,6 +11,8 @@
 #include "orthoray/generate.hpp"
 #include "orthoray/solve.hpp"
 
+#include "parse_options.hpp"
+
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -141,19 +143,11 @@ int main(int argc, char** argv) {
     std::string csv = "bench/results/bounds.csv";
     bool quick = false;
     std::uint64_t max_steps = 400'000'000;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "--quick")
-            quick = true;
-        else if (arg == "--csv" && i + 1 < argc)
-            csv = argv[++i];
-        else if (arg == "--max-steps" && i + 1 < argc)
-            max_steps = std::stoull(argv[++i]);
-        else {
-            std::cerr << "usage: bounds_bench [--quick] [--csv FILE] [--max-steps N]\n";
-            return 2;
-        }
-    }
+    CLI::App app{"bounds_bench: the proven state bounds against the states a solve visits"};
+    app.add_flag("--quick", quick, "small instances only");
+    app.add_option("--csv", csv, "where the rows go")->capture_default_str();
+    app.add_option("--max-steps", max_steps, "step limit of each solve")->capture_default_str();
+    orthoray::bench::parse_options(app, "bounds_bench", argc, argv);
     std::ofstream out(csv);
     if (!out) {
         std::cerr << "bounds_bench: cannot write " << csv << '\n';

@@ -23,6 +23,8 @@
 #include "engine/reference_step.hpp"
 #include "orthoray/solve.hpp"
 
+#include "parse_options.hpp"
+
 #include <malloc.h>
 
 #include <atomic>
@@ -162,23 +164,21 @@ int run(int argc, char** argv) {
     std::int64_t max_n = 10000;
     double work = 3e6; // elements x events per run
     std::string csv_path = "bench/results/illumination.csv";
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "--quick")
-            runs = 1, max_n = 1000, work = 3e5;
-        else if (arg == "--runs" && i + 1 < argc)
-            runs = std::atoi(argv[++i]);
-        else if (arg == "--max-n" && i + 1 < argc)
-            max_n = std::atoll(argv[++i]);
-        else if (arg == "--work" && i + 1 < argc)
-            work = std::atof(argv[++i]);
-        else if (arg == "--csv" && i + 1 < argc)
-            csv_path = argv[++i];
-        else {
-            std::fprintf(stderr, "usage: illumination_bench [--quick] [--runs N] [--max-n N] "
-                                 "[--work ELEMENTS_TIMES_EVENTS] [--csv FILE]\n");
-            return 2;
-        }
+    bool quick = false;
+    CLI::App app{"illumination_bench: branch walks against the naive walk"};
+    app.add_flag("--quick", quick, "1 run, n up to 1000, work 3e5 (given options still win)");
+    CLI::Option* runs_option =
+        app.add_option("--runs", runs, "timed runs per scene")->capture_default_str();
+    CLI::Option* max_n_option =
+        app.add_option("--max-n", max_n, "largest scene, in elements")->capture_default_str();
+    CLI::Option* work_option =
+        app.add_option("--work", work, "elements x events per run")->capture_default_str();
+    app.add_option("--csv", csv_path, "where the rows go")->capture_default_str();
+    orthoray::bench::parse_options(app, "illumination_bench", argc, argv);
+    if (quick) {
+        if (runs_option->count() == 0) runs = 1;
+        if (max_n_option->count() == 0) max_n = 1000;
+        if (work_option->count() == 0) work = 3e5;
     }
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
     Table table({"scene", "elements", "branch states expanded", "events", "new: branch states/s",

@@ -18,6 +18,8 @@
 
 #include <unistd.h>
 
+#include "parse_options.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -39,49 +41,31 @@ struct Options {
     std::string csv = "bench/results/induction.csv";
 };
 
-[[noreturn]] void usage(const std::string& problem) {
-    std::fprintf(stderr,
-                 "induction_bench: %s\n"
-                 "usage: induction_bench [--quick] [--runs N] [--sim-cap N] [--csv FILE]\n"
-                 "  --runs N     timed solve() calls per instance and engine (default 5;\n"
-                 "               a simulation slower than 2 s runs once)\n"
-                 "  --sim-cap N  simulate only when reflections <= N (default 3e8)\n"
-                 "  --csv FILE   default bench/results/induction.csv (\"\" for none)\n"
-                 "  --quick      small instances, 1 run, cap 10^7: a seconds-long smoke run\n",
-                 problem.c_str());
-    std::exit(2);
-}
-
 Options parse(int argc, char** argv) {
     Options o;
-    bool runs_given = false, cap_given = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage(arg + " needs a value");
-            return argv[++i];
-        };
-        if (arg == "--quick")
-            o.quick = true;
-        else if (arg == "--runs")
-            o.runs = std::stoi(value()), runs_given = true;
-        else if (arg == "--sim-cap") {
-            // Accept 3e8 as well as 300000000.
-            const std::string v = value();
-            const std::size_t e = v.find_first_of("eE");
-            o.sim_cap = Integer(v.substr(0, e));
-            if (e != std::string::npos)
-                for (int j = std::stoi(v.substr(e + 1)); j > 0; --j) o.sim_cap *= 10;
-            cap_given = true;
-        } else if (arg == "--csv")
-            o.csv = value();
-        else
-            usage("unknown argument " + arg);
+    std::string sim_cap;
+    CLI::App app{"induction_bench: time to the answer against orbit length, induction against "
+                 "the lattice simulation"};
+    app.add_flag("--quick", o.quick, "small instances, 1 run, cap 10^7: a seconds-long smoke run");
+    CLI::Option* runs =
+        app.add_option("--runs", o.runs,
+                       "timed solve() calls per instance and engine (default 5; a simulation "
+                       "slower than 2 s runs once)")
+            ->check(CLI::Range(1, 1000000));
+    CLI::Option* cap =
+        app.add_option("--sim-cap", sim_cap, "simulate only when reflections <= N (default 3e8)");
+    app.add_option("--csv", o.csv, "where the rows go (\"\" for none)")->capture_default_str();
+    parse_options(app, "induction_bench", argc, argv);
+    if (!sim_cap.empty()) {
+        // Accept 3e8 as well as 300000000.
+        const std::size_t e = sim_cap.find_first_of("eE");
+        o.sim_cap = Integer(sim_cap.substr(0, e));
+        if (e != std::string::npos)
+            for (int j = std::stoi(sim_cap.substr(e + 1)); j > 0; --j) o.sim_cap *= 10;
     }
-    if (o.runs < 1) usage("--runs must be at least 1");
     if (o.quick) {
-        if (!runs_given) o.runs = 1;
-        if (!cap_given) o.sim_cap = 10'000'000;
+        if (runs->count() == 0) o.runs = 1;
+        if (cap->count() == 0) o.sim_cap = 10'000'000;
     }
     return o;
 }

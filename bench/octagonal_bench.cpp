@@ -18,12 +18,12 @@
 #include "orthoray/generate.hpp"
 #include "orthoray/solve.hpp"
 
+#include "parse_options.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -99,10 +99,12 @@ Timing measure(const Scene& s, Shooter shooter, std::uint64_t steps, int runs) {
 int main(int argc, char** argv) {
     std::uint64_t steps = 2'000'000;
     int runs = 5;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--steps")) steps = std::strtoull(argv[i + 1], nullptr, 10);
-        if (!std::strcmp(argv[i], "--runs")) runs = std::atoi(argv[i + 1]);
-    }
+    CLI::App app{"octagonal_bench: axis-only scenes against scenes with diagonal mirrors"};
+    app.add_option("--steps", steps, "reflections a run")->capture_default_str();
+    app.add_option("--runs", runs, "runs per measurement (the median is reported)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+    orthoray::bench::parse_options(app, "octagonal_bench", argc, argv);
     std::printf("| n | axis-only, default (%s) | axis-only, bvh | octagonal, bvh | octagonal / "
                 "axis bvh | octagonal / axis default | seed |\n|---|---|---|---|---|---|---|\n",
                 "grid, then pieces");

@@ -5,6 +5,8 @@
 // build/bench/octagonal_induction_bench [--quick | --climb ROUNDS]
 #include <orthoray/orthoray.hpp>
 
+#include "parse_options.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -267,8 +269,12 @@ void step_bound_search(std::mt19937_64& rng, int climb) {
 int main(int argc, char** argv) {
     // --quick: one run of each family; --climb R: R hill-climb rounds per
     // small k (default 3,000).
-    const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
-    const int climb = argc > 2 && std::string(argv[1]) == "--climb" ? std::stoi(argv[2]) : 3000;
+    bool quick = false;
+    int climb = 3000;
+    CLI::App app{"octagonal_induction_bench: the induction engine on scenes with diagonal mirrors"};
+    app.add_flag("--quick", quick, "one run of each family");
+    app.add_option("--climb", climb, "hill-climb rounds per small k")->capture_default_str();
+    orthoray::bench::parse_options(app, "octagonal_induction_bench", argc, argv);
     const int repeats = quick ? 1 : 5;
     std::printf("%-34s %-8s %24s %8s %6s %9s %6s %9s\n", "family", "reason", "reflections",
                 "pieces", "log2N", "steps", "ratio", "seconds");

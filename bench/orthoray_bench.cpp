@@ -10,6 +10,7 @@
 // check); every measurement runs in a forked child (child_process.hpp).
 // This file parses the options (CLI11) and runs the parts asked for.
 #include "orthoray_bench.hpp"
+#include "parse_options.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -83,14 +84,7 @@ Options parse(int argc, char** argv) {
                    "where to write the float-wrong instance (empty: nowhere)");
     app.add_option("--write-scenes", o.write_scenes,
                    "write the benchmark scenes as .scene files into DIR and stop");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        std::exit(app.exit(e));
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "orthoray_bench: %s\nsee bench/README.md or --help\n", e.what());
-        std::exit(2);
-    }
+    parse_options(app, "orthoray_bench", argc, argv);
     if (!runs.empty()) o.runs = static_cast<int>(std::max<std::uint64_t>(1, *parse_count(runs)));
     if (!steps.empty()) o.steps = *parse_count(steps);
     if (!scenes.empty()) o.scenes = *parse_count(scenes);

@@ -9,6 +9,8 @@
 #include "orthoray/puzzle.hpp"
 #include "puzzle/beam_walk.hpp"
 
+#include "parse_options.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -92,20 +94,14 @@ int main(int argc, char** argv) {
     int runs = 5;
     double cap = 10;
     std::string csv;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "--runs" && i + 1 < argc)
-            runs = std::max(1, std::atoi(argv[++i]));
-        else if (arg == "--brute-cap" && i + 1 < argc)
-            cap = std::atof(argv[++i]);
-        else if (arg == "--csv" && i + 1 < argc)
-            csv = argv[++i];
-        else {
-            std::fprintf(stderr,
-                         "usage: puzzle_bench [--runs N] [--brute-cap SECONDS] [--csv FILE]\n");
-            return 2;
-        }
-    }
+    CLI::App app{"puzzle_bench: the Lazor placement search against brute force"};
+    app.add_option("--runs", runs, "timed runs per level")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--brute-cap", cap, "seconds before brute force gives up")
+        ->capture_default_str();
+    app.add_option("--csv", csv, "also write the rows to this CSV file");
+    orthoray::bench::parse_options(app, "puzzle_bench", argc, argv);
     const fs::path folder =
         fs::path(ORTHORAY_BENCH_DIR) / ".." / ".." / "shared" / "puzzles" / "lazor";
     if (!fs::is_directory(folder)) {

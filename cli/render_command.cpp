@@ -8,20 +8,14 @@
 #include "run_monitor.hpp"
 #include "scene_format_option.hpp"
 #include "stop_at_once.hpp"
+#include "svg_to_png.hpp"
 
-#include <cerrno>
 #include <chrono>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-extern char** environ;
+#include <sstream>
 
 namespace orthoray::cli {
 namespace {
@@ -148,7 +142,7 @@ Answer decide(const Scene& scene, const RenderArgs& args) {
     SolveMonitor progress(scene, SolveMonitor::Clock::now() + decide_budget, !args.quiet);
     SolveOptions options;
     options.monitor = &progress;
-    const Answer answer = solve(scene, options);
+    Answer answer = solve(scene, options);
     progress.erase_progress();
     return answer;
 }
@@ -182,43 +176,9 @@ void draw_branches(const Scene& scene, const RenderArgs& args, SceneRenderer& re
                             " states drawn, fewest reflections first (--steps N draws more)");
 }
 
-// Runs `rsvg-convert -o png svg` without a shell.
-void convert_to_png(const std::string& svg, const std::string& png) {
-    std::string program = "rsvg-convert", dash_o = "-o", out = png, in = svg;
-    char* argv[] = {program.data(), dash_o.data(), out.data(), in.data(), nullptr};
-    pid_t pid = 0;
-    if (posix_spawnp(&pid, "rsvg-convert", nullptr, nullptr, argv, environ) != 0)
-        throw UsageError("PNG output needs the program rsvg-convert (Debian package "
-                         "librsvg2-bin); install it, or write an .svg file instead");
-    int status = 0;
-    if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw UsageError("rsvg-convert could not write '" + png + "'");
-}
-
-// A file in the temporary directory, removed when this goes out of scope.
-class ScratchFile {
-public:
-    explicit ScratchFile(const char* suffix) {
-        path_ =
-            (std::filesystem::temp_directory_path() / "orthoray-render-XXXXXX").string() + suffix;
-        const int fd = mkstemps(path_.data(), static_cast<int>(std::strlen(suffix)));
-        if (fd < 0)
-            throw WriteError("cannot create a temporary file: " +
-                             std::string(std::strerror(errno)));
-        close(fd);
-    }
-    ~ScratchFile() { std::remove(path_.c_str()); }
-    ScratchFile(const ScratchFile&) = delete;
-    ScratchFile& operator=(const ScratchFile&) = delete;
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-};
-
-// SVG is written to the target through OutputFile; PNG goes through rsvg-convert in
-// the temporary directory and is then copied, so that the target too is
-// only ever replaced whole.
+// SVG is written to the target through OutputFile; PNG is converted by
+// rsvg-convert through pipes (svg_to_png.hpp) into the same OutputFile, so
+// that the target is only ever replaced whole either way.
 void write_picture(const SceneRenderer& renderer, const RenderArgs& args) {
     OutputFile out(args.out, {args.file, args.certificate}, "the picture");
     const bool png = args.out.ends_with(".png") || args.out.ends_with(".PNG");
@@ -227,14 +187,9 @@ void write_picture(const SceneRenderer& renderer, const RenderArgs& args) {
         out.commit();
         return;
     }
-    const ScratchFile svg(".svg"), picture(".png");
-    {
-        OutputFile svg_file(svg.path(), {}, "a temporary SVG file");
-        renderer.write_svg(svg_file.stream());
-        svg_file.commit();
-    }
-    convert_to_png(svg.path(), picture.path());
-    out.stream() << read_file(picture.path());
+    std::ostringstream svg;
+    renderer.write_svg(svg);
+    svg_to_png(svg.str(), out.stream());
     out.commit();
 }
 

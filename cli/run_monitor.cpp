@@ -91,6 +91,16 @@ static double resident_megabytes() {
     return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1048576.0;
 }
 
+// count / bound as a percentage with one decimal, rounded down, in exact
+// integer arithmetic: permille = floor(1000 count / bound). A run that has
+// begun but not reached a tenth of a percent says "<0.1%", not "0.0%".
+static std::string percent_of(std::uint64_t count, const Integer& bound) {
+    const Integer permille = Integer(static_cast<unsigned long>(count)) * 1000 / bound;
+    if (permille == 0 && count > 0) return "<0.1%";
+    const Integer whole = permille / 10, tenths = permille % 10;
+    return whole.get_str() + "." + tenths.get_str() + "%";
+}
+
 void SolveMonitor::draw(std::uint64_t count, Clock::time_point now) {
     // Display only: floating point never reaches an answer.
     const double seconds = std::chrono::duration<double>(now - begin_).count();
@@ -107,10 +117,7 @@ void SolveMonitor::draw(std::uint64_t count, Clock::time_point now) {
         if (!state_bound_) state_bound_ = compute_bounds(scene_, false).refined_states;
         if (*state_bound_ > 0) {
             const std::string bound = state_bound_->get_str();
-            std::snprintf(
-                numbers, sizeof numbers, ", %.3g of the ",
-                mpq_class(Integer(static_cast<unsigned long>(count)), *state_bound_).get_d());
-            line += numbers;
+            line += ", " + percent_of(count, *state_bound_) + " of the ";
             line += bound.size() <= 12 ? bound : "10^" + std::to_string(bound.size() - 1) + "+";
             line += " states bound";
         }

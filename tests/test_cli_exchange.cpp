@@ -3,6 +3,7 @@
 // with one FILE:LINE:COL line, JSON Lines certificates verified and
 // tampered ones rejected, and render writing SVG and PNG.
 #include "support/run_cli.hpp"
+#include "support/spawn_cli.hpp"
 #include "support/test_files.hpp"
 #include "support/xml_check.hpp"
 
@@ -194,6 +195,43 @@ TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render][slow]") {
     const std::string bytes = slurp(png);
     REQUIRE(bytes.size() > 1000);
     CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+
+    // A picture far larger than a pipe holds (about 0.9 MB from a 28 kB SVG)
+    // comes through whole, and nothing but the target is left in its folder.
+    const std::string scene = dir.write("long.scene", "dim 2\n"
+                                                      "mirror x 0 y 0 997\n"
+                                                      "mirror x 1000 y 0 997\n"
+                                                      "mirror y 0 x 0 1000\n"
+                                                      "mirror y 997 x 0 1000\n"
+                                                      "ray 0 1 1 1\n"
+                                                      "target 3 7/2\n");
+    const std::string long_png = dir.path("long.png");
+    const CliResult big =
+        run_cli("render " + quote(scene) + " --steps 20000 -o " + quote(long_png));
+    INFO(big.err);
+    REQUIRE(big.status == 0);
+    const std::string long_bytes = slurp(long_png);
+    CHECK(long_bytes.size() > (1u << 18));
+    CHECK(long_bytes.compare(long_bytes.size() - 8, 8, "IEND\xae\x42\x60\x82") == 0);
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path("")))
+        left.push_back(entry.path().filename().string());
+    std::sort(left.begin(), left.end());
+    CHECK(left == std::vector<std::string>{"cube.png", "long.png", "long.scene"});
+}
+
+TEST_CASE("render without rsvg-convert says so and leaves the PNG target alone", "[cli][render]") {
+    TempDir dir;
+    const std::string png = dir.write("old.png", "the previous picture");
+    const orthoray::test::ShellResult r =
+        orthoray::test::run_shell("PATH=/nonexistent \"$ORTHORAY\" render " +
+                                  quote(instance("2d/box-corner-3x5.scene")) + " -o " + quote(png));
+    CHECK(r.status == 2);
+    CHECK(r.err == "orthoray: PNG output needs the program rsvg-convert (Debian package "
+                   "librsvg2-bin); install it, or write an .svg file instead\n");
+    CHECK(slurp(png) == "the previous picture");
+    CHECK(std::distance(std::filesystem::directory_iterator(dir.path("")),
+                        std::filesystem::directory_iterator{}) == 1);
 }
 
 TEST_CASE("render and convert explain themselves with an example", "[cli]") {

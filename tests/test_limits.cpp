@@ -22,6 +22,7 @@
 #include <optional>
 #include <poll.h>
 #include <pty.h>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -349,6 +350,9 @@ TEST_CASE("a long run shows a progress line on a terminal only, and erases it",
     CHECK(seen.find(" reflections, ") != std::string::npos);
     CHECK(seen.find("/s, ") != std::string::npos);
     CHECK(seen.find("states bound") != std::string::npos);
+    // The share of the bound as a percentage with one decimal, or <0.1%.
+    CHECK(std::regex_search(
+        seen, std::regex(R"(, (<0\.1|[0-9]+\.[0-9])% of the [0-9^+]+ states bound)")));
     // The last thing written returns to the line's start and clears it.
     REQUIRE(seen.size() >= 4);
     CHECK(seen.substr(seen.size() - 4) == "\r\033[K");

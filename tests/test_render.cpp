@@ -107,6 +107,10 @@ TEST_CASE("the XML checker itself rejects broken documents", "[render]") {
     CHECK_FALSE(read_xml("<a>&nbsp;</a>").well_formed);
     CHECK_FALSE(read_xml("<a>").well_formed);
     CHECK_FALSE(read_xml("<a/><b/>").well_formed);
+    CHECK_FALSE(read_xml("t<a/>").well_formed);
+    CHECK_FALSE(read_xml("<a>\x01</a>").well_formed);
+    CHECK(read_xml("<?xml version=\"1.0\"?>\n<a x=\"&amp;nbsp;&#38;\">&lt;</a>\n").well_formed);
+    CHECK(read_xml("<a> <b/> </a>").elements.at(0).text == "  ");
 }
 
 TEST_CASE("a 2D picture has the mirrors, markers, caption and the whole path", "[render]") {

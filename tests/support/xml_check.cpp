@@ -1,132 +1,87 @@
 #include "support/xml_check.hpp"
 
-#include <cctype>
+#include <pugixml.hpp>
 
 namespace orthoray::test {
 namespace {
 
-bool name_char(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == ':' ||
-           c == '.';
+// pugixml keeps an unknown entity such as &nbsp; as plain text and accepts
+// control bytes, so these two rules of XML 1.0 (section 4.6 and the Char
+// production, section 2.2) are checked here, on the still escaped text.
+std::string bad_character_data(const std::string& data) {
+    for (std::size_t i = data.find('&'); i != std::string::npos; i = data.find('&', i + 1)) {
+        bool known = data.compare(i, 2, "&#") == 0;
+        for (const char* entity : {"&amp;", "&lt;", "&gt;", "&quot;", "&apos;"})
+            known = known || data.compare(i, std::string(entity).size(), entity) == 0;
+        if (!known) return "unknown entity in \"" + data + "\"";
+    }
+    for (unsigned char c : data)
+        if (c < 0x20 && c != '\n' && c != '\t' && c != '\r') return "control byte";
+    return {};
 }
 
-class Reader {
-public:
-    explicit Reader(const std::string& text) : text_(text) {}
-
-    XmlDocument read() {
-        XmlDocument doc;
-        try {
-            if (text_.compare(0, 5, "<?xml") == 0) {
-                const std::size_t end = text_.find("?>");
-                if (end == std::string::npos) fail("unterminated XML declaration");
-                at_ = end + 2;
-            }
-            bool root_seen = false;
-            while (at_ < text_.size()) {
-                if (text_[at_] != '<') {
-                    const std::size_t next = text_.find('<', at_);
-                    const std::string data = text_.substr(at_, next - at_);
-                    check_entities(data);
-                    if (stack_.empty()) {
-                        for (char c : data)
-                            if (!std::isspace(static_cast<unsigned char>(c)))
-                                fail("text outside the root element");
-                    } else {
-                        doc.elements[stack_.back()].text += data;
-                    }
-                    at_ = next == std::string::npos ? text_.size() : next;
-                    continue;
-                }
-                if (text_.compare(at_, 2, "</") == 0) {
-                    at_ += 2;
-                    const std::string name = read_name();
-                    skip_space();
-                    expect('>');
-                    if (stack_.empty() || doc.elements[stack_.back()].name != name)
-                        fail("closing tag </" + name + "> does not match");
-                    stack_.pop_back();
-                    continue;
-                }
-                ++at_;
-                if (stack_.empty() && root_seen) fail("a second root element");
-                root_seen = true;
-                XmlElement element;
-                element.name = read_name();
-                while (true) {
-                    skip_space();
-                    if (at_ >= text_.size()) fail("unterminated tag");
-                    if (text_[at_] == '/' || text_[at_] == '>') break;
-                    const std::string key = read_name();
-                    skip_space();
-                    expect('=');
-                    skip_space();
-                    const char quote = at_ < text_.size() ? text_[at_] : 0;
-                    if (quote != '"' && quote != '\'') fail("unquoted attribute " + key);
-                    const std::size_t end = text_.find(quote, at_ + 1);
-                    if (end == std::string::npos) fail("unterminated attribute " + key);
-                    const std::string value = text_.substr(at_ + 1, end - at_ - 1);
-                    if (value.find('<') != std::string::npos) fail("'<' in attribute " + key);
-                    check_entities(value);
-                    if (!element.attributes.emplace(key, value).second)
-                        fail("repeated attribute " + key);
-                    at_ = end + 1;
-                }
-                doc.elements.push_back(element);
-                if (text_[at_] == '/') {
-                    ++at_;
-                    expect('>');
-                } else {
-                    ++at_;
-                    stack_.push_back(doc.elements.size() - 1);
-                }
-            }
-            if (!stack_.empty()) fail("unclosed <" + doc.elements[stack_.back()].name + ">");
-            if (!root_seen) fail("no root element");
-            doc.well_formed = true;
-        } catch (const std::string& error) {
-            doc.error = error;
+// Lists `node` and the elements below it in document order; returns the
+// first broken piece of character data, or an empty string.
+std::string collect(const pugi::xml_node& node, std::vector<XmlElement>& elements) {
+    XmlElement element;
+    element.name = node.name();
+    for (const pugi::xml_attribute& a : node.attributes()) {
+        if (std::string why = bad_character_data(a.value()); !why.empty()) return why;
+        element.attributes.emplace(a.name(), a.value());
+    }
+    const std::size_t at = elements.size();
+    elements.push_back(element);
+    for (const pugi::xml_node& child : node.children()) {
+        if (child.type() == pugi::node_pcdata) {
+            if (std::string why = bad_character_data(child.value()); !why.empty()) return why;
+            elements[at].text += child.value();
+        } else if (child.type() == pugi::node_cdata) {
+            elements[at].text += child.value();
+        } else if (child.type() == pugi::node_element) {
+            if (std::string why = collect(child, elements); !why.empty()) return why;
         }
-        return doc;
     }
-
-private:
-    [[noreturn]] void fail(const std::string& what) const {
-        throw what + " at byte " + std::to_string(at_);
-    }
-    void skip_space() {
-        while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
-    }
-    void expect(char c) {
-        if (at_ >= text_.size() || text_[at_] != c) fail(std::string("expected '") + c + "'");
-        ++at_;
-    }
-    std::string read_name() {
-        const std::size_t start = at_;
-        while (at_ < text_.size() && name_char(text_[at_])) ++at_;
-        if (at_ == start) fail("expected a name");
-        return text_.substr(start, at_ - start);
-    }
-    void check_entities(const std::string& data) const {
-        for (std::size_t i = data.find('&'); i != std::string::npos; i = data.find('&', i + 1)) {
-            bool known = false;
-            for (const char* entity : {"&amp;", "&lt;", "&gt;", "&quot;", "&apos;"})
-                known = known || data.compare(i, std::string(entity).size(), entity) == 0;
-            if (!known) fail("unknown entity");
-        }
-        for (unsigned char c : data)
-            if (c < 0x20 && c != '\n' && c != '\t' && c != '\r') fail("control byte");
-    }
-
-    const std::string& text_;
-    std::size_t at_ = 0;
-    std::vector<std::size_t> stack_;
-};
+    return {};
+}
 
 } // namespace
 
 XmlDocument read_xml(const std::string& text) {
-    return Reader(text).read();
+    XmlDocument doc;
+    pugi::xml_document parsed;
+    // Without parse_escapes the values stay escaped for the entity check;
+    // parse_ws_pcdata keeps the whitespace a caption may hold; parse_fragment
+    // keeps text outside the root, which a document must not have.
+    const unsigned options = (pugi::parse_default & ~pugi::parse_escapes) | pugi::parse_ws_pcdata |
+                             pugi::parse_declaration | pugi::parse_fragment;
+    const pugi::xml_parse_result result = parsed.load_buffer(text.data(), text.size(), options);
+    if (!result) {
+        doc.error = std::string(result.description()) + " at byte " + std::to_string(result.offset);
+        return doc;
+    }
+    pugi::xml_node root;
+    for (const pugi::xml_node& top : parsed.children()) {
+        if (top.type() == pugi::node_element) {
+            if (root) {
+                doc.error = "a second root element <" + std::string(top.name()) + ">";
+                return doc;
+            }
+            root = top;
+        } else if (top.type() == pugi::node_pcdata) {
+            for (const char* c = top.value(); *c != 0; ++c)
+                if (*c != ' ' && *c != '\n' && *c != '\t' && *c != '\r') {
+                    doc.error = "text outside the root element";
+                    return doc;
+                }
+        }
+    }
+    if (!root) {
+        doc.error = "no root element";
+        return doc;
+    }
+    doc.error = collect(root, doc.elements);
+    doc.well_formed = doc.error.empty();
+    return doc;
 }
 
 } // namespace orthoray::test

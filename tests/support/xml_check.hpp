@@ -1,6 +1,8 @@
-// A small XML reader for tests of the SVG output: it checks that the text
-// is well-formed (every tag closed in order, attributes quoted, only the
-// five predefined entities) and lists the elements with their attributes.
+// XML checks for tests of the SVG output: pugixml parses the text (every tag
+// closed in order, attributes quoted); on top of that we require one root
+// element, only the five predefined entities or character references, and no
+// control bytes, since renderers such as rsvg-convert refuse those. The
+// elements are listed with their attributes.
 #pragma once
 
 #include <map>
@@ -17,7 +19,7 @@ struct XmlElement {
 
 struct XmlDocument {
     bool well_formed = false;
-    std::string error;                // why not, with the byte offset
+    std::string error;                // why not, with the byte offset when known
     std::vector<XmlElement> elements; // in document order
 };
 
