@@ -400,7 +400,8 @@ TEST_CASE("octagonal lattice: its certificates verify, and are the reference tra
         CHECK(verdict.valid == decided);
         ++compared;
     }
-    CHECK(compared > test::case_count(400) * 8 / 10);
+    // About 3 in 4 of the drawn scenes hold a diagonal and are compared.
+    CHECK(compared > test::case_count(400) * 6 / 10);
 }
 
 namespace {
