@@ -201,9 +201,13 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
     }
     const auto first = layout.locate(x, x_negative);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
+    // raw() reads the transversals, so it must run before they are moved
+    // into the exchange: argument order is unspecified (clang goes left to
+    // right, and the fuzz build read an emptied vector).
+    const Integer raw_first = layout.raw(*first);
     IntervalExchange exchange =
         finish_exchange(layout.size(), layout.modulus(), std::move(layout.transversals()),
-                        std::move(raw), layout.raw(*first), hits);
+                        std::move(raw), raw_first, hits);
     exchange.first_transversal = first->first;
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];
