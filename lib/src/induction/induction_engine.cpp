@@ -7,6 +7,25 @@
 
 namespace orthoray::induction {
 
+void set_outcome(Answer& answer, const InducedOrbit& orbit) {
+    switch (orbit.event) {
+    case ExchangeEvent::none:
+        answer.reason = Reason::cycle;
+        answer.reflections = orbit.period;
+        return;
+    case ExchangeEvent::hit:
+        answer.reason = Reason::hit;
+        break;
+    case ExchangeEvent::escape:
+        answer.reason = Reason::escape;
+        break;
+    case ExchangeEvent::absorbed:
+        answer.reason = Reason::absorbed;
+        break;
+    }
+    answer.reflections = orbit.offset + 1;
+}
+
 template <class Int>
 Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
                 const shoot::PieceTable<Int>& table, const SolveOptions& options,
@@ -31,23 +50,7 @@ Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int
     answer.engine = EngineUsed::induction;
     answer.arithmetic = orbit->arithmetic;
     answer.shooter = ShooterUsed::pieces;
-    switch (orbit->event) {
-    case ExchangeEvent::none:
-        answer.reason = Reason::cycle;
-        answer.reflections = orbit->period;
-        break;
-    case ExchangeEvent::hit:
-        answer.reason = Reason::hit;
-        break;
-    case ExchangeEvent::escape:
-        answer.reason = Reason::escape;
-        break;
-    case ExchangeEvent::absorbed:
-        answer.reason = Reason::absorbed;
-        break;
-    }
-    // The event at T^e(x) is at the state after reflection e + 1.
-    if (orbit->event != ExchangeEvent::none) answer.reflections = orbit->offset + 1;
+    set_outcome(answer, *orbit);
     if (options.max_steps) {
         // As a simulation would: it notices a cycle one reflection after the period.
         const Integer needed =

@@ -24,6 +24,11 @@ inline std::size_t piece_cap(std::size_t elements) {
     return std::max<std::size_t>(64 * elements + 1024, std::size_t{1} << 20);
 }
 
+// The answer's reason and reflections from an induced orbit (the axis
+// engine's and the octagonal one's alike): a cycle of its period, or the
+// event at T^e(x), which the ray meets after reflection e + 1.
+void set_outcome(Answer& answer, const InducedOrbit& orbit);
+
 struct Decision {
     std::optional<Answer> answer; // decided, within options.max_steps
     std::optional<Limit> limit;   // the monitor stopped the induction

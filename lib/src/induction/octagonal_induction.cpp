@@ -114,23 +114,7 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
     answer.stats.induction.states = exchange.size;
     answer.stats.induction.steps = orbit->steps;
     answer.stats.induction.rounds = orbit->rounds;
-    switch (orbit->event) {
-    case ExchangeEvent::none:
-        answer.reason = Reason::cycle;
-        answer.reflections = orbit->period;
-        break;
-    case ExchangeEvent::hit:
-        answer.reason = Reason::hit;
-        break;
-    case ExchangeEvent::escape:
-        answer.reason = Reason::escape;
-        break;
-    case ExchangeEvent::absorbed:
-        answer.reason = Reason::absorbed;
-        break;
-    }
-    // The event at T^e(x) is at the state after reflection e + 1.
-    if (orbit->event != ExchangeEvent::none) answer.reflections = orbit->offset + 1;
+    set_outcome(answer, *orbit);
     if (orbit->event == ExchangeEvent::none && layout->twin) {
         // On the double cover the lifted orbit closes after the physical
         // period p or after 2p, when T^p(x) is x's twin: mark the twin alone.
