@@ -12,6 +12,7 @@
 #include "engine/octagonal_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
+#include "engine/poll_pacer.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/octagonal_lattice.hpp"
 #include "shoot/octagonal_bvh.hpp"
@@ -150,17 +151,11 @@ private:
     void tail_pass(std::uint64_t lambda) {
         State<Int> behind = first_, ahead = first_;
         auto step = [&](State<Int>& s) { s = *next(s, shooter_.shoot(s.p, s.d)); };
-        std::uint64_t chunk = 64, done = 0;
-        auto begin = Clock::now();
+        PollPacer pacer;
         // One pair of steps (or one step of `ahead` while it runs ahead);
         // false when the monitor stopped the run.
         auto paced = [&] {
-            if (++done < chunk || !options_.monitor) return true;
-            done = 0;
-            const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
-            if (seconds < 0.005 && chunk < (std::uint64_t{1} << 24)) chunk *= 2;
-            if (seconds > 0.02 && chunk > 1) chunk /= 2;
-            begin = Clock::now();
+            if (!options_.monitor || !pacer.due()) return true;
             if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
                 answer_.limit = *limit;
                 finish(Reason::limit);
