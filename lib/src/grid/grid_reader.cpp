@@ -64,26 +64,15 @@ public:
     GridReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
     GridMaze read() {
-        std::size_t begin = 0;
-        int line_number = 0;
-        while (true) {
-            ++line_number;
-            const std::size_t end = text_.find('\n', begin);
-            std::string_view line = text_.substr(
-                begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
-            if (!line.empty() && line.back() == '\r') line.remove_suffix(1); // CRLF
-            if (end == std::string_view::npos) {
-                eof_line_ = line_number;
-                eof_column_ = static_cast<int>(line.size()) + 1;
-            }
-            line_ = line_number;
+        const io::TextEnd end = io::for_each_line(text_, [&](std::string_view line, int number) {
+            line_ = number;
             if (in_grid_)
                 read_row(line);
             else
                 read_statement_line(line);
-            if (end == std::string_view::npos) break;
-            begin = end + 1;
-        }
+        });
+        eof_line_ = end.line;
+        eof_column_ = end.column;
         if (!in_grid_) fail_at_eof("a line 'grid' followed by the rows of the maze");
         if (maze_.height == 0) fail_at_eof("a row of cells after 'grid'");
         for (const PendingIndex& index : pending_) check_range(index);

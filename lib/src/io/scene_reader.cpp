@@ -41,22 +41,10 @@ public:
         // Rationals are not nothrow-movable, so a growing vector would copy
         // every element on each reallocation: size it once instead.
         scene_.elements.reserve(element_statements());
-        std::size_t begin = 0;
-        int line_number = 0;
-        while (true) {
-            ++line_number;
-            std::size_t end = text_.find('\n', begin);
-            std::string_view line = text_.substr(
-                begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
-            read_line(line, line_number);
-            if (end == std::string_view::npos) {
-                if (!line.empty() && line.back() == '\r') line.remove_suffix(1); // CR, no LF
-                eof_line_ = line_number;
-                eof_column_ = static_cast<int>(line.size()) + 1;
-                break;
-            }
-            begin = end + 1;
-        }
+        const io::TextEnd end = io::for_each_line(
+            text_, [&](std::string_view line, int number) { read_line(line, number); });
+        eof_line_ = end.line;
+        eof_column_ = end.column;
         if (dim_line_ == 0) fail_at_eof("'dim 2' or 'dim 3' as the first statement");
         if (scene_.rays.empty()) fail_at_eof("a 'ray' statement");
         if (scene_.targets.empty()) fail_at_eof("a 'target' statement");
@@ -99,7 +87,6 @@ private:
 
     void read_line(std::string_view line, int line_number) {
         line_ = line_number;
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1); // CRLF
         const std::size_t comment = line.find('#');
         if (const std::optional<io::BadByte> bad = io::find_bad_byte(line, comment))
             fail(bad->column, bad->message);

@@ -1,6 +1,7 @@
-// What the line-based readers (.scene, .bff levels, .grid mazes) do alike
-// with one line of text: refuse bytes that are not plain text, and split the
-// code before a comment into tokens with their 1-based byte columns.
+// What the line-based readers (.scene, .bff levels, .grid mazes) do alike:
+// walk the text line by line, refuse bytes that are not plain text, and
+// split the code before a comment into tokens with their 1-based byte
+// columns.
 #pragma once
 
 #include <optional>
@@ -23,6 +24,29 @@ struct BadByte {
     std::string message;
 };
 std::optional<BadByte> find_bad_byte(std::string_view line, std::size_t comment);
+
+// Where the text ends, for "found end of file" messages: the last line's
+// number and the column just after it.
+struct TextEnd {
+    int line, column;
+};
+
+// Calls read(line, number) for every line of `text`, numbered from 1, each
+// without its '\n' and without a CR before it (CRLF files, or a last line
+// ending in CR). Exceptions from `read` pass through.
+template <class Read>
+TextEnd for_each_line(std::string_view text, Read&& read) {
+    std::size_t begin = 0;
+    for (int number = 1;; ++number) {
+        const std::size_t end = text.find('\n', begin);
+        std::string_view line = text.substr(
+            begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        read(line, number);
+        if (end == std::string_view::npos) return {number, static_cast<int>(line.size()) + 1};
+        begin = end + 1;
+    }
+}
 
 // The tokens of `code`, separated by spaces and tabs, into `out` (cleared).
 void split_tokens(std::string_view code, std::vector<Token>& out);

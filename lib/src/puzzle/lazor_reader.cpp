@@ -65,22 +65,10 @@ public:
     LazorReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
     LazorLevel read() {
-        std::size_t begin = 0;
-        int line_number = 0;
-        while (true) {
-            ++line_number;
-            const std::size_t end = text_.find('\n', begin);
-            std::string_view line = text_.substr(
-                begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
-            if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-            read_line(line, line_number);
-            if (end == std::string_view::npos) {
-                eof_line_ = line_number;
-                eof_column_ = static_cast<int>(line.size()) + 1;
-                break;
-            }
-            begin = end + 1;
-        }
+        const io::TextEnd end = io::for_each_line(
+            text_, [&](std::string_view line, int number) { read_line(line, number); });
+        eof_line_ = end.line;
+        eof_column_ = end.column;
         if (grid_line_ == 0)
             fail_at_eof("a grid: GRID START, rows of cells (o x A B C), GRID STOP");
         if (in_grid_)
