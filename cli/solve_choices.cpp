@@ -8,11 +8,6 @@
 namespace orthoray::cli {
 namespace {
 
-const std::map<std::string, Engine> engines{{"auto", Engine::automatic},
-                                            {"lattice", Engine::lattice},
-                                            {"induction", Engine::induction},
-                                            {"reference", Engine::reference},
-                                            {"graph", Engine::graph}};
 const std::map<std::string, CycleDetector> detectors{{"first-state", CycleDetector::first_state},
                                                      {"brent", CycleDetector::brent}};
 const std::map<std::string, Arithmetic> arithmetics{
@@ -34,7 +29,7 @@ std::vector<std::string> names(const std::map<std::string, T>& choices) {
 
 SolveOptions SolveChoices::options() const {
     SolveOptions options;
-    options.engine = engines.at(engine);
+    options.engine = engine_names().at(engine);
     options.cycle_detector = detectors.at(detector);
     options.arithmetic = arithmetics.at(arithmetic);
     options.shooter = shooters.at(shooter);
@@ -68,7 +63,7 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
                     "input size; other dimensions are simulated), reference (naive rational O(n) "
                     "scan per reflection, the test oracle), graph (explicit state graph; small "
                     "scenes only)")
-        ->check(CLI::IsMember(names(engines)));
+        ->check(CLI::IsMember(names(engine_names())));
     cmd->add_option("--cycle-detector", c.detector,
                     "first-state (default: compare with the state after reflection 1) or brent "
                     "(Brent's algorithm; needs no injectivity, so always used with one-sided "

@@ -22,15 +22,9 @@
 namespace orthoray::python {
 namespace {
 
-const std::map<std::string, Engine> engines{{"auto", Engine::automatic},
-                                            {"lattice", Engine::lattice},
-                                            {"induction", Engine::induction},
-                                            {"reference", Engine::reference},
-                                            {"graph", Engine::graph}};
-
 Engine engine_from(const std::string& name) {
-    const auto it = engines.find(name);
-    if (it == engines.end())
+    const auto it = engine_names().find(name);
+    if (it == engine_names().end())
         throw py::value_error("engine: found '" + name +
                               "', expected auto, lattice, induction, reference or graph");
     return it->second;

@@ -6,7 +6,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace orthoray {
@@ -19,6 +21,10 @@ enum class Engine {
     reference, // naive O(n)-per-reflection scan in rationals: the test oracle
     graph,     // explicit state graph of every lattice state (small scenes only)
 };
+
+// The engines by the names the command line and the Python module take
+// ("auto", "lattice", "induction", "reference", "graph").
+const std::map<std::string, Engine>& engine_names();
 
 // How the engines notice that the trajectory is periodic. Both use O(1) memory.
 enum class CycleDetector {

@@ -94,6 +94,15 @@ Answer solve_octagonal_automatically(const Scene& scene, const SolveOptions& opt
 
 } // namespace
 
+const std::map<std::string, Engine>& engine_names() {
+    static const std::map<std::string, Engine> names{{"auto", Engine::automatic},
+                                                     {"lattice", Engine::lattice},
+                                                     {"induction", Engine::induction},
+                                                     {"reference", Engine::reference},
+                                                     {"graph", Engine::graph}};
+    return names;
+}
+
 Answer solve(const Scene& scene, const SolveOptions& options) {
     // Diagonals (docs/octagonal.md): the illumination engines follow them,
     // and so does every engine for a single trajectory; induction and the
