@@ -1,10 +1,11 @@
 // How the illumination search finds the next event of a state. The search
-// sees the scene only through this small interface, so a faster stepper
-// (the lattice engine's, once it knows one-sided elements) can replace the
-// rational scan without touching the search or its certificates.
+// sees the scene only through this small interface, so the lattice stepper
+// (lattice_stepper.hpp) and the rational scan below are interchangeable
+// without touching the search or its certificates.
 #pragma once
 
 #include "engine/reference_step.hpp"
+#include "orthoray/answer.hpp"
 
 namespace orthoray::engine {
 
@@ -17,6 +18,8 @@ public:
     // escape, up to and including the point of an absorption).
     virtual bool passes(const Vector& x, const Vector& p, const Vector& v,
                         const ReferenceEvent& event) const = 0;
+    // What finds the events, for the answer's `shooter` (none: the scan).
+    virtual ShooterUsed shooter() const { return ShooterUsed::none; }
 };
 
 // The reference scan: exact rationals, every element looked at per event.

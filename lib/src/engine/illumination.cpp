@@ -13,12 +13,14 @@
 #include "engine/illumination.hpp"
 
 #include "engine/branch_state_set.hpp"
+#include "engine/lattice_stepper.hpp"
 #include "engine/stretch.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <new>
 #include <tuple>
 
@@ -59,12 +61,22 @@ struct Candidate {
 
 class IlluminationSearch {
 public:
-    IlluminationSearch(const Scene& scene, const SolveOptions& options)
-        : scene_(scene), options_(options), stepper_(scene), budget_(options.max_state_bytes),
+    // With no stepper given, run() builds the fastest that suits the scene.
+    IlluminationSearch(const Scene& scene, const SolveOptions& options, const EventStepper* stepper)
+        : scene_(scene), options_(options), stepper_(stepper), budget_(options.max_state_bytes),
           states_(scene, budget_), best_(scene.targets.size()) {}
 
     Answer run() {
         try {
+            // The lattices' grids take O(n) memory each: built here, where
+            // running out of it is a memory limit like any other.
+            if (!stepper_) {
+                if (LatticeStepper::applies(scene_))
+                    owned_ = std::make_unique<LatticeStepper>(scene_);
+                else
+                    owned_ = std::make_unique<ReferenceStepper>(scene_);
+                stepper_ = owned_.get();
+            }
             search();
         } catch (const std::bad_alloc&) {
             limit_ = Limit::memory;
@@ -154,7 +166,7 @@ private:
         Vector p, v;
         states_.state(b, p, v);
         const StretchEnd end = walk_stretch(
-            stepper_, p, v,
+            *stepper_, p, v,
             [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
                 // --max-steps caps the events stepped in all stretches
                 // together, not the branch states: one stretch alone can
@@ -168,7 +180,7 @@ private:
                 for (std::size_t t = 0; t < best_.size(); ++t) {
                     Candidate& c = best_[t];
                     if (c.found && !(here < c.label)) continue;
-                    if (stepper_.passes(scene_.targets[t], q, u, e)) c = {true, here, b};
+                    if (stepper_->passes(scene_.targets[t], q, u, e)) c = {true, here, b};
                 }
                 return poll();
             });
@@ -189,6 +201,7 @@ private:
         Answer answer;
         answer.engine = EngineUsed::branches;
         answer.arithmetic = ArithmeticUsed::rational;
+        if (stepper_) answer.shooter = stepper_->shooter();
         answer.targets.assign(scene_.targets.size(), TargetAnswer{});
         // At a limit a candidate is final only when no waiting branch state
         // (nor the one cut short) has a smaller label.
@@ -260,17 +273,18 @@ private:
         for (std::size_t i = chain.size(); i-- > 0;) {
             states_.state(chain[i], p, v);
             walk_stretch(
-                stepper_, p, v,
+                *stepper_, p, v,
                 [&](const Vector& q, const Vector& u, std::uint64_t, const ReferenceEvent& e) {
                     observer.step(q, u);
-                    return i > 0 || !stepper_.passes(scene_.targets[t], q, u, e);
+                    return i > 0 || !stepper_->passes(scene_.targets[t], q, u, e);
                 });
         }
     }
 
     const Scene& scene_;
     const SolveOptions& options_;
-    ReferenceStepper stepper_;
+    const EventStepper* stepper_;
+    std::unique_ptr<EventStepper> owned_; // the stepper run() built, if any
     ByteBudget budget_;
     BranchStateSet states_;
     std::vector<Record> records_;
@@ -285,8 +299,13 @@ private:
 
 } // namespace
 
+Answer solve_illumination(const Scene& scene, const SolveOptions& options,
+                          const EventStepper& stepper) {
+    return IlluminationSearch(scene, options, &stepper).run();
+}
+
 Answer solve_illumination(const Scene& scene, const SolveOptions& options) {
-    return IlluminationSearch(scene, options).run();
+    return IlluminationSearch(scene, options, nullptr).run();
 }
 
 } // namespace orthoray::engine

@@ -3,6 +3,7 @@
 // stretch between them is walked again when needed, never stored.
 #pragma once
 
+#include "engine/event_stepper.hpp"
 #include "orthoray/solve.hpp"
 
 namespace orthoray::engine {
@@ -11,12 +12,18 @@ namespace orthoray::engine {
 // before it first does and the least-numbered ray achieving that.
 // Memory grows with the number of branch states (rays' starts and states
 // leaving an event with two or more outgoing directions), not with the
-// length of the stretches between them. options.max_steps caps the branch
-// states expanded, options.max_state_bytes the bytes held for them; a cap
-// or a monitor's limit gives Reason::limit, the lit targets whose count is
-// already final, and the rest unknown. options.illumination_observer, when
-// set, is given every branch state, label and witness at the end (and the
-// search then explores every reachable branch state).
+// length of the stretches between them. options.max_steps caps the events
+// stepped (one stretch can be endless), options.max_state_bytes the bytes
+// held for branch states; a cap or a monitor's limit gives Reason::limit,
+// the lit targets whose count is already final, and the rest unknown.
+// options.illumination_observer, when set, is given every branch state,
+// label and witness at the end (and the search then explores every
+// reachable branch state). Stretches are stepped on the rays' lattices
+// (lattice_stepper.hpp) unless the scene has diagonals.
 Answer solve_illumination(const Scene& scene, const SolveOptions& options);
+
+// The same search stepping with `stepper` (the benchmark compares them).
+Answer solve_illumination(const Scene& scene, const SolveOptions& options,
+                          const EventStepper& stepper);
 
 } // namespace orthoray::engine

@@ -44,12 +44,23 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
         }
         acting.push_back(&e);
     }
-    event.direction = v;
-    if (event.escape) return event;
-    EventOutcome outcome = event_outcome(scene.dim, acting, v);
+    if (event.escape) {
+        event.direction = v;
+        return event;
+    }
+    return event_at(scene.dim, std::move(event.t), std::move(event.point), acting, v);
+}
+
+ReferenceEvent event_at(int dim, Rational t, Vector point,
+                        const std::vector<const Element*>& acting, const Vector& v) {
+    ReferenceEvent event;
+    event.escape = false;
+    event.t = std::move(t);
+    event.point = std::move(point);
+    EventOutcome outcome = event_outcome(dim, acting, v);
     event.absorbed = outcome.absorbed;
     event.outgoing = std::move(outcome.outgoing);
-    if (!event.absorbed) event.direction = event.outgoing.front().direction;
+    event.direction = event.absorbed ? v : event.outgoing.front().direction;
     return event;
 }
 

@@ -13,10 +13,12 @@ Integer abs_of(const Integer& a) {
 
 } // namespace
 
-LatticeScene make_lattice(const Scene& scene) {
+LatticeScene make_lattice(const Scene& scene, std::size_t ray_index) {
     LatticeScene out;
     out.scene = &scene;
-    const Vector& v = scene.ray().direction;
+    const Ray& ray = scene.rays.at(ray_index);
+    out.ray = &ray;
+    const Vector& v = ray.direction;
 
     // Primitive integer direction u and L = lcm |u_j|.
     Integer vden = 1;
@@ -39,8 +41,7 @@ LatticeScene make_lattice(const Scene& scene) {
     auto spans_start = [&](const Element& e) {
         if (v[e.axis] == 0) return false; // moving parallel to its plane
         for (int j = 0; j < scene.dim; ++j)
-            if (v[j] == 0 && (scene.ray().start[j] < e.lo[j] || e.hi[j] < scene.ray().start[j]))
-                return false;
+            if (v[j] == 0 && (ray.start[j] < e.lo[j] || e.hi[j] < ray.start[j])) return false;
         return true;
     };
 
@@ -50,7 +51,7 @@ LatticeScene make_lattice(const Scene& scene) {
         for (int i = 0; i < out.dim; ++i)
             if (x[out.active[i]].get_den() != 1) D = lcm(D, x[out.active[i]].get_den());
     };
-    take_denominators(scene.ray().start);
+    take_denominators(ray.start);
     take_denominators(scene.target());
     for (const Element& e : scene.elements) {
         if (!spans_start(e)) continue;
@@ -69,7 +70,7 @@ LatticeScene make_lattice(const Scene& scene) {
         if (mpz_cmpabs(x.get_mpz_t(), out.magnitude.get_mpz_t()) > 0) out.magnitude = abs_of(x);
     };
     for (int i = 0; i < out.dim; ++i) {
-        out.start[i] = scaled(scene.ray().start[out.active[i]], i);
+        out.start[i] = scaled(ray.start[out.active[i]], i);
         track(out.start[i]);
         if (v[out.active[i]] < 0) out.start_direction |= 1u << i;
     }
@@ -80,6 +81,7 @@ LatticeScene make_lattice(const Scene& scene) {
     for (const Element& e : scene.elements) {
         if (!spans_start(e)) continue;
         LatticeElement le;
+        le.source = static_cast<std::uint32_t>(&e - scene.elements.data());
         le.absorber = e.kind == ElementKind::absorber;
         for (int i = 0; i < out.dim; ++i) {
             if (out.active[i] == e.axis) le.axis = i;
@@ -101,7 +103,7 @@ LatticeScene make_lattice(const Scene& scene) {
 }
 
 Vector LatticeScene::point(const Coords& p) const {
-    Vector x = scene->ray().start; // inactive coordinates never change
+    Vector x = ray->start; // inactive coordinates never change
     for (int i = 0; i < dim; ++i) {
         x[active[i]] = Rational(p[i], scale[i]);
         x[active[i]].canonicalize();
@@ -112,7 +114,7 @@ Vector LatticeScene::point(const Coords& p) const {
 Vector LatticeScene::direction(unsigned mask) const {
     Vector d;
     for (int i = 0; i < dim; ++i) {
-        const Rational& v = scene->ray().direction[active[i]];
+        const Rational& v = ray->direction[active[i]];
         d[active[i]] = ((mask >> i) & 1u) ? Rational(-abs(v)) : Rational(abs(v));
     }
     return d;
@@ -120,7 +122,7 @@ Vector LatticeScene::direction(unsigned mask) const {
 
 bool LatticeScene::to_lattice(const Vector& x, Coords& out) const {
     for (int j = 0; j < scene->dim; ++j)
-        if (scene->ray().direction[j] == 0 && x[j] != scene->ray().start[j]) return false;
+        if (ray->direction[j] == 0 && x[j] != ray->start[j]) return false;
     for (int i = 0; i < dim; ++i) {
         Rational r = x[active[i]] * scale[i];
         if (r.get_den() != 1) return false;

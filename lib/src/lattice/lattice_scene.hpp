@@ -17,6 +17,7 @@
 #include "orthoray/scene.hpp"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace orthoray::lattice {
@@ -32,6 +33,7 @@ struct LatticeElement {
     // Every bit for a two-sided element (the default); half of them for a
     // one-sided one.
     unsigned acting = ~0u;
+    std::uint32_t source = 0; // its index in Scene::elements
     bool acts_on(unsigned negative) const { return (acting >> negative) & 1u; }
 };
 
@@ -49,6 +51,7 @@ struct LatticeScene {
     // can meet): the step map may be non-injective (docs/optics.md).
     bool one_sided = false;
     const Scene* scene = nullptr;
+    const Ray* ray = nullptr; // the ray whose lattice this is
 
     // Back to scene coordinates (exact): a lattice point, a direction mask.
     Vector point(const Coords& p) const;
@@ -58,6 +61,8 @@ struct LatticeScene {
     bool to_lattice(const Vector& x, Coords& out) const;
 };
 
-LatticeScene make_lattice(const Scene& scene);
+// The lattice of ray number `ray_index` (from 0) of the scene; its
+// `target` and `target_reachable` are the first target's.
+LatticeScene make_lattice(const Scene& scene, std::size_t ray_index = 0);
 
 } // namespace orthoray::lattice

@@ -1,0 +1,146 @@
+#include "engine/lattice_stepper.hpp"
+
+#include "lattice/lattice_int.hpp"
+#include "lattice/lattice_scene.hpp"
+#include "shoot/uniform_grid.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+
+namespace orthoray::engine {
+
+class LatticeStepper::RayLattice {
+public:
+    virtual ~RayLattice() = default;
+    // The next event of (p, v), or nullopt when (p, v) is not a state of
+    // this lattice (another ray's branch).
+    virtual std::optional<ReferenceEvent> next(const Vector& p, const Vector& v) const = 0;
+};
+
+namespace {
+
+using lattice::LatticeScene;
+
+// Cells per element, as the lattice engine's grid has them: 2 in the plane;
+// in space a ray crosses more cells per element met, and 32 pay off there
+// (docs/shooting.md).
+std::int64_t cells_per_element(int dim) {
+    return dim <= 2 ? 2 : 32;
+}
+
+template <class Int, int M>
+class RayLatticeOn final : public LatticeStepper::RayLattice {
+public:
+    explicit RayLatticeOn(LatticeScene ls) : ls_(std::move(ls)), grid_(ls_, cells_per_element(M)) {
+        // The grid keeps what it shoots with; per element only what the
+        // acting rule needs is kept besides.
+        element_.reserve(ls_.elements.size());
+        for (const lattice::LatticeElement& e : ls_.elements)
+            element_.push_back({e.source, static_cast<std::uint8_t>(e.acting)});
+        ls_.elements = {};
+    }
+
+    std::optional<ReferenceEvent> next(const Vector& p, const Vector& v) const override {
+        const Scene& scene = *ls_.scene;
+        // v must be the ray's direction with some active components negated
+        // (the inactive ones are 0 for both); bit i of the mask is set where
+        // v moves towards -infinity.
+        unsigned negative = 0;
+        for (int j = 0, i = 0; j < scene.dim; ++j) {
+            const Rational& u = ls_.ray->direction[j];
+            if (i < M && ls_.active[i] == j) {
+                if (v[j] != u && v[j] != -u) return std::nullopt;
+                if (v[j] < 0) negative |= 1u << i;
+                ++i;
+            } else if (v[j] != 0) {
+                return std::nullopt;
+            }
+        }
+        lattice::Coords at;
+        if (!ls_.to_lattice(p, at)) return std::nullopt;
+        Int q[M];
+        for (int i = 0; i < M; ++i) q[i] = lattice::from_integer<Int>(at[i]);
+
+        const shoot::Shot<Int> shot = grid_.shoot(q, negative);
+        if (shot.escape) {
+            ReferenceEvent escape;
+            escape.direction = v;
+            return escape;
+        }
+        for (int i = 0; i < M; ++i) {
+            q[i] += ((negative >> i) & 1u) ? Int(-shot.t) : shot.t;
+            at[i] = lattice::to_integer(q[i]);
+        }
+        // Every element acting there, each once (a cell lists an element once).
+        std::vector<const Element*> acting;
+        grid_.for_each_element_at(q, [&](std::uint32_t k) {
+            if ((element_[k].acting >> negative) & 1u)
+                acting.push_back(&scene.elements[element_[k].source]);
+        });
+        Vector point = ls_.point(at);
+        const int j = ls_.active[0];
+        Rational t = (point[j] - p[j]) / v[j];
+        return event_at(scene.dim, std::move(t), std::move(point), acting, v);
+    }
+
+private:
+    struct Source {
+        std::uint32_t source; // index in Scene::elements
+        std::uint8_t acting;  // LatticeElement::acting
+    };
+    LatticeScene ls_;
+    shoot::UniformGrid<Int, M> grid_;
+    std::vector<Source> element_; // by lattice index, as the grid reports them
+};
+
+template <class Int>
+std::unique_ptr<LatticeStepper::RayLattice> on_int(LatticeScene ls) {
+    switch (ls.dim) {
+    case 1:
+        return std::make_unique<RayLatticeOn<Int, 1>>(std::move(ls));
+    case 2:
+        return std::make_unique<RayLatticeOn<Int, 2>>(std::move(ls));
+    default:
+        return std::make_unique<RayLatticeOn<Int, 3>>(std::move(ls));
+    }
+}
+
+// The narrowest integer type the lattice engine proves safe for these
+// coordinates (lattice/lattice_int.hpp).
+std::unique_ptr<LatticeStepper::RayLattice> ray_lattice(LatticeScene ls) {
+    if (ls.magnitude < lattice::int64_limit()) return on_int<std::int64_t>(std::move(ls));
+    if (ls.magnitude < lattice::int128_limit()) return on_int<lattice::int128_t>(std::move(ls));
+    return on_int<Integer>(std::move(ls));
+}
+
+} // namespace
+
+LatticeStepper::LatticeStepper(const Scene& scene) : scene_(scene) {
+    for (std::size_t r = 0; r < scene.rays.size(); ++r) {
+        const Ray& ray = scene.rays[r];
+        // A ray whose start state an earlier lattice holds has all its
+        // branches there too.
+        const bool held = std::any_of(lattices_.begin(), lattices_.end(), [&](const auto& l) {
+            return l->next(ray.start, ray.direction).has_value();
+        });
+        if (!held) lattices_.push_back(ray_lattice(lattice::make_lattice(scene, r)));
+    }
+}
+
+LatticeStepper::~LatticeStepper() = default;
+
+ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
+    if (std::optional<ReferenceEvent> e = lattices_[last_]->next(p, v)) return std::move(*e);
+    for (std::size_t i = 0; i < lattices_.size(); ++i)
+        if (i != last_)
+            if (std::optional<ReferenceEvent> e = lattices_[i]->next(p, v)) {
+                last_ = i;
+                return std::move(*e);
+            }
+    // Every branch stays on its ray's lattice (see the header), so a state
+    // that no lattice holds did not come from the search.
+    throw std::logic_error("LatticeStepper: a state off every ray's lattice");
+}
+
+} // namespace orthoray::engine

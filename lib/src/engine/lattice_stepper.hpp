@@ -1,0 +1,53 @@
+// The illumination search's fast stepper: the next event found on the ray's
+// integer lattice by the lattice engine's uniform grid, instead of by the
+// reference scan of every element (docs/optics.md, "Stepping").
+//
+// Why every state of a search has a lattice: among axis-parallel elements an
+// event negates components of the direction (a mirror, or a splitter's
+// reflected beam) or keeps it (a splitter's transmitted beam), so every
+// branch of ray r moves along r's direction with some components negated and
+// meets elements at points of r's lattice (lattice/lattice_scene.hpp, Reif,
+// Tygar and Yoshida 1994). The grid finds the first acting element in O(1)
+// expected cells; the elements acting at that point come from one cell, and
+// the acting rule (event_rule.hpp) turns them into the outgoing directions,
+// as in every other engine. Diagonals turn directions off the lattice, so
+// scenes with them keep the reference scan.
+#pragma once
+
+#include "engine/event_stepper.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace orthoray::engine {
+
+class LatticeStepper final : public EventStepper {
+public:
+    // Whether the scene suits this stepper: no diagonal elements.
+    static bool applies(const Scene& scene) { return !scene.has_diagonal(); }
+
+    // Builds one lattice and grid for every ray whose states no earlier
+    // ray's lattice holds: O(n) time and memory each.
+    explicit LatticeStepper(const Scene& scene);
+    ~LatticeStepper() override;
+
+    ReferenceEvent next(const Vector& p, const Vector& v) const override;
+    bool passes(const Vector& x, const Vector& p, const Vector& v,
+                const ReferenceEvent& event) const override {
+        return reference_passes(scene_, x, p, v, event);
+    }
+    ShooterUsed shooter() const override { return ShooterUsed::grid; }
+
+    // One ray's lattice with its grid; defined in the .cpp file.
+    class RayLattice;
+
+private:
+    const Scene& scene_;
+    std::vector<std::unique_ptr<RayLattice>> lattices_;
+    // The lattice that held the last state asked about: a stretch stays on
+    // one, so it is tried first.
+    mutable std::size_t last_ = 0;
+};
+
+} // namespace orthoray::engine

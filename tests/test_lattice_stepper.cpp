@@ -1,0 +1,104 @@
+// The illumination search's lattice stepper against the reference scan:
+// event for event (point, parameter, absorption, every outgoing direction
+// and whether it reflects) along random branches of random scenes with
+// splitters, one-sided elements and several rays, on every integer type
+// the stepper picks (coordinates shifted past 2^59 and 2^123).
+#include "engine/lattice_stepper.hpp"
+#include "orthoray/parse.hpp"
+#include "support/case_count.hpp"
+#include "support/portable_random.hpp"
+#include "support/random_optics.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <stdexcept>
+
+using namespace orthoray;
+
+namespace {
+
+// The scene moved by `by` on every axis: answers and directions are kept,
+// only the coordinates' size changes.
+Scene shifted(Scene s, const Integer& by) {
+    auto move = [&](Vector& x) {
+        for (int j = 0; j < s.dim; ++j) x[j] += by;
+    };
+    for (Element& e : s.elements) {
+        move(e.lo);
+        move(e.hi);
+    }
+    for (Ray& r : s.rays) move(r.start);
+    for (Vector& t : s.targets) move(t);
+    return s;
+}
+
+void require_same(const engine::ReferenceEvent& fast, const engine::ReferenceEvent& plain) {
+    REQUIRE(fast.escape == plain.escape);
+    CHECK(fast.direction == plain.direction);
+    if (plain.escape) return;
+    CHECK(fast.t == plain.t);
+    CHECK(fast.point == plain.point);
+    CHECK(fast.absorbed == plain.absorbed);
+    REQUIRE(fast.outgoing.size() == plain.outgoing.size());
+    for (std::size_t k = 0; k < plain.outgoing.size(); ++k) {
+        CHECK(fast.outgoing[k].direction == plain.outgoing[k].direction);
+        CHECK(fast.outgoing[k].reflection == plain.outgoing[k].reflection);
+    }
+}
+
+} // namespace
+
+TEST_CASE("the lattice stepper finds the reference scan's events on random branches",
+          "[illumination][property]") {
+    std::mt19937_64 rng(24'112'026);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 30;
+    shape.one_sided_percent = 30;
+    const Integer shifts[] = {Integer(0), Integer(1) << 62, Integer(1) << 126};
+    const int cases = test::case_count(1200);
+    std::uint64_t events = 0, splits = 0, absorbed = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 2 == 0 ? 3 : 2;
+        // Up to 60 elements, so that the grids have many cells to walk.
+        shape.scene.max_elements = i % 3 == 0 ? 60 : 12;
+        shape.scene.range = i % 3 == 0 ? 20 : 6;
+        shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
+        const Scene s = shifted(test::random_optics_scene(rng, shape), shifts[i % 3]);
+        INFO("case " << i << "\n" << write_scene(s));
+        const engine::LatticeStepper fast(s);
+        const engine::ReferenceStepper plain(s);
+        for (const Ray& ray : s.rays) {
+            Vector p = ray.start, v = ray.direction;
+            for (int step = 0; step < 40; ++step) {
+                const engine::ReferenceEvent e = plain.next(p, v);
+                require_same(fast.next(p, v), e);
+                ++events;
+                if (e.escape || e.absorbed) {
+                    absorbed += e.absorbed;
+                    break;
+                }
+                splits += e.outgoing.size() > 1;
+                p = e.point;
+                v = e.outgoing[test::pick_index(rng, 0, e.outgoing.size() - 1)].direction;
+            }
+        }
+    }
+    // The branches met every kind of event.
+    // (15,023 events, 2,275 splits and 373 absorptions at full size.)
+    CHECK(events > 10u * static_cast<unsigned>(cases));
+    CHECK(splits > events / 10);
+    CHECK(absorbed > static_cast<unsigned>(cases) / 5);
+}
+
+TEST_CASE("a state off every ray's lattice is refused, not answered", "[illumination]") {
+    const Scene s = parse_scene("dim 2\nmirror x 5 y -5 5\nray 0 0 1 1\ntarget 5 5\n", "s.scene",
+                                SceneFormat::text);
+    const engine::LatticeStepper stepper(s);
+    // The ray's own states are answered ...
+    CHECK(stepper.next(s.ray().start, s.ray().direction).point == Vector{5, 5, 0});
+    // ... a direction that is no sign change of the ray's is not.
+    CHECK_THROWS_AS(stepper.next(s.ray().start, Vector{1, 2, 0}), std::logic_error);
+    // Neither is a point between the lattice's points.
+    CHECK_THROWS_AS(stepper.next(Vector{Rational(1, 3), 0, 0}, s.ray().direction),
+                    std::logic_error);
+}
