@@ -1,18 +1,23 @@
 // illumination_bench: the space-bounded illumination search (docs/optics.md)
-// against a naive baseline in the same run, on growing random splitter
-// scenes in 2D and 3D: bench/scenes.hpp's random mirror boxes with every
-// third inner mirror a splitter, and a target no branch reaches (the parity
-// argument of random_box holds for every branch), so neither search stops
-// early and both run to their caps.
+// with its two steppers, and a naive baseline, in the same run, on growing
+// random splitter scenes in 2D and 3D: bench/scenes.hpp's random mirror
+// boxes with every third inner mirror a splitter, and a target no branch
+// reaches (the parity argument of random_box holds for every branch), so no
+// search stops early and each runs to its cap.
 //
-// - new: solve() with max_steps = B branch states expanded; reports branch
-//   states expanded per second, events stepped per second, the branch
-//   states stored, the bytes it accounts for them (set, labels, queue:
-//   Answer::stats.illumination.state_bytes) and the peak heap growth seen
-//   by this program's allocation hooks, both per stored state.
-// - naive: the search it replaced, Dijkstra over every state in a
-//   std::map of exact rational states (and a std::priority_queue of them),
-//   capped at the same number of events, so both step the same amount.
+// - lattice: solve()'s search, stepping on the rays' lattices with the
+//   uniform grid (engine/lattice_stepper.hpp), capped at --events events;
+//   reports events and branch states expanded per second, the branch states
+//   stored, the bytes it accounts for them (Answer::stats.illumination.
+//   state_bytes) and the peak heap growth seen by this program's allocation
+//   hooks per stored state (the grids are built before and reported apart,
+//   as bytes per element).
+// - scan: the same search stepping with the reference scan (O(n) an event),
+//   the stepper it had before, capped at --work / n events.
+// - naive: the search before branch states, Dijkstra over every state in a
+//   plain std::unordered_map of full exact rational states, expanding as
+//   many states as the scan stepped events, so that both do the same
+//   scanning.
 //
 // Times are medians of --runs runs; memory is deterministic (one run).
 // Floating point appears only in the printed figures. How to run it:
@@ -20,6 +25,8 @@
 #include "bench_util.hpp"
 #include "scenes.hpp"
 
+#include "engine/illumination.hpp"
+#include "engine/lattice_stepper.hpp"
 #include "engine/reference_step.hpp"
 #include "orthoray/solve.hpp"
 
@@ -31,11 +38,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <map>
 #include <new>
+#include <optional>
 #include <queue>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 
 namespace {
 
@@ -111,12 +119,35 @@ Scene splitter_box(int dim, std::int64_t n) {
     return s;
 }
 
+using State = std::pair<Vector, Vector>;
+
+// A hash of a full exact state: its rationals' limbs, mixed (FNV-1a steps,
+// then a multiplicative spread per number).
+struct StateHash {
+    std::size_t operator()(const State& s) const {
+        std::uint64_t h = 0;
+        auto mix = [&h](mpz_srcptr z) {
+            std::uint64_t x = 1469598103934665603u ^ (mpz_sgn(z) < 0 ? 1u : 0u);
+            for (std::size_t i = 0; i < mpz_size(z); ++i)
+                x = (x ^ static_cast<std::uint64_t>(mpz_getlimbn(z, static_cast<mp_size_t>(i)))) *
+                    1099511628211u;
+            h = (h ^ x) * 0x9e3779b97f4a7c15u;
+        };
+        for (const Vector* v : {&s.first, &s.second})
+            for (const Rational& q : *v) {
+                mix(q.get_num_mpz_t());
+                mix(q.get_den_mpz_t());
+            }
+        return static_cast<std::size_t>(h);
+    }
+};
+
 // The naive baseline: the search before docs/optics.md's branch states,
-// every state in an exact std::map, expanded in (reflections, ray) order
-// until `events` states are expanded. Returns the states stored.
+// every state in a hash table of full exact states, expanded in
+// (reflections, ray) order until `events` states are expanded. Returns the
+// states stored.
 std::size_t naive_search(const Scene& scene, std::uint64_t events) {
-    using State = std::pair<Vector, Vector>;
-    std::map<State, bool> settled;
+    std::unordered_map<State, bool, StateHash> settled;
     using Entry = std::tuple<std::uint64_t, std::size_t, State>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
@@ -159,76 +190,105 @@ std::string si(double x) {
     return b;
 }
 
+// One timed search with `stepper`, capped at `events` events.
+Answer search(const Scene& scene, const engine::EventStepper& stepper, std::uint64_t events) {
+    SolveOptions options;
+    options.max_steps = events;
+    return engine::solve_illumination(scene, options, stepper);
+}
+
 int run(int argc, char** argv) {
     int runs = 3;
-    std::int64_t max_n = 10000;
-    double work = 3e6; // elements x events per run
+    std::int64_t max_n = 100000;
+    double events = 2e5; // events a run of the lattice search
+    double work = 3e6;   // elements x events a run of the scan and the naive search
     std::string csv_path = "bench/results/illumination.csv";
     bool quick = false;
-    CLI::App app{"illumination_bench: branch walks against the naive walk"};
-    app.add_flag("--quick", quick, "1 run, n up to 1000, work 3e5 (given options still win)");
+    CLI::App app{"illumination_bench: the branch search's steppers against the naive search"};
+    app.add_flag("--quick", quick,
+                 "1 run, n up to 1000, events 2e4, work 3e5 (given options still win)");
     CLI::Option* runs_option =
         app.add_option("--runs", runs, "timed runs per scene")->capture_default_str();
     CLI::Option* max_n_option =
         app.add_option("--max-n", max_n, "largest scene, in elements")->capture_default_str();
+    CLI::Option* events_option =
+        app.add_option("--events", events, "events a run of the lattice search")
+            ->capture_default_str();
     CLI::Option* work_option =
-        app.add_option("--work", work, "elements x events per run")->capture_default_str();
+        app.add_option("--work", work, "elements x events a run of the scan and the naive search")
+            ->capture_default_str();
     app.add_option("--csv", csv_path, "where the rows go")->capture_default_str();
     orthoray::bench::parse_options(app, "illumination_bench", argc, argv);
     if (quick) {
         if (runs_option->count() == 0) runs = 1;
         if (max_n_option->count() == 0) max_n = 1000;
+        if (events_option->count() == 0) events = 2e4;
         if (work_option->count() == 0) work = 3e5;
     }
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
-    Table table({"scene", "elements", "branch states expanded", "events", "new: branch states/s",
-                 "new: events/s", "naive: events/s", "new: states stored", "naive: states stored",
-                 "new: bytes/state (accounted)", "new: bytes/state (heap peak)",
-                 "naive: bytes/state (heap peak)", "heap peak naive / new"});
+    Table table({"scene", "elements", "lattice: events", "lattice: events/s",
+                 "lattice: branch states/s", "scan: events/s", "naive: events/s", "lattice / scan",
+                 "states stored", "bytes/state (accounted)", "bytes/state (heap peak)",
+                 "naive: bytes/state (heap peak)", "grids: bytes/element", "grids: build s"});
     Csv csv(csv_path);
-    csv.row({"dim", "elements", "expanded", "events", "new_seconds", "naive_seconds", "new_states",
-             "naive_states", "new_accounted_bytes", "new_heap_peak", "naive_heap_peak"});
+    csv.row({"dim", "elements", "lattice_events", "lattice_expanded", "lattice_seconds",
+             "scan_events", "scan_seconds", "naive_seconds", "states", "accounted_bytes",
+             "heap_peak", "naive_states", "naive_heap_peak", "grid_bytes", "grid_seconds"});
     for (int dim : {2, 3})
         for (std::int64_t n = 100; n <= max_n; n *= 10) {
             const Scene scene = splitter_box(dim, n);
-            SolveOptions options;
-            options.max_steps = static_cast<std::uint64_t>(work / static_cast<double>(n) / 2);
+            const auto fast_events = static_cast<std::uint64_t>(events);
+            const auto scan_events = std::max<std::uint64_t>(
+                1, static_cast<std::uint64_t>(work / static_cast<double>(n)));
+            std::optional<engine::LatticeStepper> lattice;
+            auto begin = std::chrono::steady_clock::now();
+            const std::size_t grid_bytes = peak_growth([&] { lattice.emplace(scene); });
+            const double grid_seconds = seconds_since(begin);
+            const engine::ReferenceStepper scan(scene);
             Answer answer;
-            const std::size_t new_peak = peak_growth([&] { answer = solve(scene, options); });
+            const std::size_t peak =
+                peak_growth([&] { answer = search(scene, *lattice, fast_events); });
             if (answer.reason != Reason::limit) {
                 std::fprintf(stderr, "illumination_bench: the search ended before its cap\n");
                 return 1;
             }
-            const std::uint64_t events = answer.stats.illumination.events;
             std::size_t naive_states = 0;
             const std::size_t naive_peak =
-                peak_growth([&] { naive_states = naive_search(scene, events); });
-            std::vector<double> new_times, naive_times;
+                peak_growth([&] { naive_states = naive_search(scene, scan_events); });
+            std::vector<double> fast_times, scan_times, naive_times;
             for (int r = 0; r < runs; ++r) {
-                auto begin = std::chrono::steady_clock::now();
-                solve(scene, options);
-                new_times.push_back(seconds_since(begin));
                 begin = std::chrono::steady_clock::now();
-                naive_search(scene, events);
+                search(scene, *lattice, fast_events);
+                fast_times.push_back(seconds_since(begin));
+                begin = std::chrono::steady_clock::now();
+                search(scene, scan, scan_events);
+                scan_times.push_back(seconds_since(begin));
+                begin = std::chrono::steady_clock::now();
+                naive_search(scene, scan_events);
                 naive_times.push_back(seconds_since(begin));
             }
-            const double tn = median(new_times), tb = median(naive_times);
+            const double tf = median(fast_times), ts = median(scan_times), tb = median(naive_times);
+            const double fast_rate = static_cast<double>(fast_events) / tf;
+            const double scan_rate = static_cast<double>(scan_events) / ts;
             const double stored = static_cast<double>(answer.states.get_ui());
             const std::uint64_t expanded = answer.stats.illumination.expanded;
+            const double elements = static_cast<double>(scene.elements.size());
             const std::string name = "random " + std::to_string(dim) + "D n=" + std::to_string(n);
-            table.add({name, std::to_string(scene.elements.size()), std::to_string(expanded),
-                       std::to_string(events), si(static_cast<double>(expanded) / tn),
-                       si(static_cast<double>(events) / tn), si(static_cast<double>(events) / tb),
-                       std::to_string(answer.states.get_ui()), std::to_string(naive_states),
+            table.add({name, std::to_string(scene.elements.size()), std::to_string(fast_events),
+                       si(fast_rate), si(static_cast<double>(expanded) / tf), si(scan_rate),
+                       si(static_cast<double>(scan_events) / tb), fixed(fast_rate / scan_rate),
+                       std::to_string(answer.states.get_ui()),
                        fixed(static_cast<double>(answer.stats.illumination.state_bytes) / stored),
-                       fixed(static_cast<double>(new_peak) / stored),
+                       fixed(static_cast<double>(peak) / stored),
                        fixed(static_cast<double>(naive_peak) / static_cast<double>(naive_states)),
-                       fixed(static_cast<double>(naive_peak) / static_cast<double>(new_peak))});
+                       fixed(static_cast<double>(grid_bytes) / elements), fixed(grid_seconds, 3)});
             csv.row({std::to_string(dim), std::to_string(scene.elements.size()),
-                     std::to_string(expanded), std::to_string(events), fixed(tn, 6), fixed(tb, 6),
-                     std::to_string(answer.states.get_ui()), std::to_string(naive_states),
-                     std::to_string(answer.stats.illumination.state_bytes),
-                     std::to_string(new_peak), std::to_string(naive_peak)});
+                     std::to_string(fast_events), std::to_string(expanded), fixed(tf, 6),
+                     std::to_string(scan_events), fixed(ts, 6), fixed(tb, 6),
+                     std::to_string(answer.states.get_ui()),
+                     std::to_string(answer.stats.illumination.state_bytes), std::to_string(peak),
+                     std::to_string(naive_states), std::to_string(naive_peak),
+                     std::to_string(grid_bytes), fixed(grid_seconds, 6)});
             std::fprintf(stderr, "%s done\n", name.c_str());
         }
     table.print();
