@@ -18,8 +18,9 @@ public:
     // escape, up to and including the point of an absorption).
     virtual bool passes(const Vector& x, const Vector& p, const Vector& v,
                         const ReferenceEvent& event) const = 0;
-    // What finds the events, for the answer's `shooter` (none: the scan).
-    virtual ShooterUsed shooter() const { return ShooterUsed::none; }
+    // Tells the answer what finds the events: `shooter` and the setup
+    // statistics (the scan has neither).
+    virtual void describe(Answer&) const {}
 };
 
 // The reference scan: exact rationals, every element looked at per event.

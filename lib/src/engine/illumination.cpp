@@ -71,10 +71,7 @@ public:
             // The lattices' grids take O(n) memory each: built here, where
             // running out of it is a memory limit like any other.
             if (!stepper_) {
-                if (LatticeStepper::applies(scene_))
-                    owned_ = std::make_unique<LatticeStepper>(scene_);
-                else
-                    owned_ = std::make_unique<ReferenceStepper>(scene_);
+                owned_ = fastest_stepper(scene_);
                 stepper_ = owned_.get();
             }
             search();
@@ -201,7 +198,7 @@ private:
         Answer answer;
         answer.engine = EngineUsed::branches;
         answer.arithmetic = ArithmeticUsed::rational;
-        if (stepper_) answer.shooter = stepper_->shooter();
+        if (stepper_) stepper_->describe(answer);
         answer.targets.assign(scene_.targets.size(), TargetAnswer{});
         // At a limit a candidate is final only when no waiting branch state
         // (nor the one cut short) has a smaller label.

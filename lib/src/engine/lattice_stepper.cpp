@@ -5,6 +5,7 @@
 #include "shoot/uniform_grid.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <optional>
 #include <stdexcept>
 
@@ -16,6 +17,7 @@ public:
     // The next event of (p, v), or nullopt when (p, v) is not a state of
     // this lattice (another ray's branch).
     virtual std::optional<ReferenceEvent> next(const Vector& p, const Vector& v) const = 0;
+    virtual std::size_t cells() const = 0;
 };
 
 namespace {
@@ -84,6 +86,8 @@ public:
         return event_at(scene.dim, std::move(t), std::move(point), acting, v);
     }
 
+    std::size_t cells() const override { return grid_.cell_count(); }
+
 private:
     struct Source {
         std::uint32_t source; // index in Scene::elements
@@ -117,6 +121,7 @@ std::unique_ptr<LatticeStepper::RayLattice> ray_lattice(LatticeScene ls) {
 } // namespace
 
 LatticeStepper::LatticeStepper(const Scene& scene) : scene_(scene) {
+    const auto begin = std::chrono::steady_clock::now();
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
         const Ray& ray = scene.rays[r];
         // A ray whose start state an earlier lattice holds has all its
@@ -124,8 +129,19 @@ LatticeStepper::LatticeStepper(const Scene& scene) : scene_(scene) {
         const bool held = std::any_of(lattices_.begin(), lattices_.end(), [&](const auto& l) {
             return l->next(ray.start, ray.direction).has_value();
         });
-        if (!held) lattices_.push_back(ray_lattice(lattice::make_lattice(scene, r)));
+        if (!held) {
+            lattices_.push_back(ray_lattice(lattice::make_lattice(scene, r)));
+            cells_ += lattices_.back()->cells();
+        }
     }
+    setup_seconds_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+void LatticeStepper::describe(Answer& answer) const {
+    answer.shooter = ShooterUsed::grid;
+    answer.stats.setup.seconds = setup_seconds_;
+    answer.stats.setup.cells = cells_;
 }
 
 LatticeStepper::~LatticeStepper() = default;
@@ -141,6 +157,11 @@ ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
     // Every branch stays on its ray's lattice (see the header), so a state
     // that no lattice holds did not come from the search.
     throw std::logic_error("LatticeStepper: a state off every ray's lattice");
+}
+
+std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene) {
+    if (LatticeStepper::applies(scene)) return std::make_unique<LatticeStepper>(scene);
+    return std::make_unique<ReferenceStepper>(scene);
 }
 
 } // namespace orthoray::engine

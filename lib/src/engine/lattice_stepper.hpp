@@ -37,7 +37,7 @@ public:
                 const ReferenceEvent& event) const override {
         return reference_passes(scene_, x, p, v, event);
     }
-    ShooterUsed shooter() const override { return ShooterUsed::grid; }
+    void describe(Answer& answer) const override;
 
     // One ray's lattice with its grid; defined in the .cpp file.
     class RayLattice;
@@ -48,6 +48,11 @@ private:
     // The lattice that held the last state asked about: a stretch stays on
     // one, so it is tried first.
     mutable std::size_t last_ = 0;
+    double setup_seconds_ = 0; // building every lattice and grid
+    std::size_t cells_ = 0;    // the grids' cells together
 };
+
+// The lattice stepper where it applies, else the reference scan.
+std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene);
 
 } // namespace orthoray::engine

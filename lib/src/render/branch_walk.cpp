@@ -1,13 +1,15 @@
 // walk_branches (orthoray/render.hpp): every state reachable from the rays,
 // each walked once, in order of least reflections, for pictures. The step
-// is the reference tracer's, so the acting rule is event_rule.cpp's.
+// is the illumination search's (on the rays' lattices, or the reference
+// scan for diagonals), so the acting rule is event_rule.cpp's.
 #include "orthoray/render.hpp"
 
-#include "engine/reference_step.hpp"
+#include "engine/lattice_stepper.hpp"
 
 #include <chrono>
 #include <deque>
 #include <map>
+#include <memory>
 #include <new>
 #include <tuple>
 #include <vector>
@@ -50,6 +52,7 @@ BranchWalk walk_branches(const Scene& scene, BranchSink& sink, std::uint64_t max
     using Clock = std::chrono::steady_clock;
     auto next_poll = Clock::now();
     try {
+        const std::unique_ptr<engine::EventStepper> stepper = engine::fastest_stepper(scene);
         for (const Ray& ray : scene.rays) reach({ray.start, ray.direction}, 0, false);
         while (!queue.empty()) {
             const Queued q = queue.front();
@@ -66,7 +69,7 @@ BranchWalk walk_branches(const Scene& scene, BranchSink& sink, std::uint64_t max
             walked[q.state] = true;
             ++walk.states;
             const State s = states[q.state];
-            const engine::ReferenceEvent e = engine::reference_step(scene, s.p, s.v);
+            const engine::ReferenceEvent e = stepper->next(s.p, s.v);
             BranchSegment segment;
             segment.from = s.p;
             segment.direction = s.v;
