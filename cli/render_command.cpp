@@ -54,6 +54,31 @@ private:
     Vector last_direction_;
 };
 
+// Holds a certificate's first points back until the certificate is known to
+// list its path: an induction certificate lists it only up to the first
+// reflection, and its picture is simulated instead (release() is then never
+// called and the held points are dropped).
+class HeldPrefix : public PathSink {
+public:
+    explicit HeldPrefix(PathSink& next) : next_(next) {}
+    void visit(const Vector& point, const Vector& direction) override {
+        if (released_) return next_.visit(point, direction);
+        held_.push_back({point, direction});
+        if (held_.size() > most_held) release();
+    }
+    void release() {
+        for (const auto& [point, direction] : held_) next_.visit(point, direction);
+        held_.clear();
+        released_ = true;
+    }
+
+private:
+    static constexpr std::size_t most_held = 16; // an induction certificate lists 2
+    PathSink& next_;
+    std::vector<std::pair<Vector, Vector>> held_;
+    bool released_ = false;
+};
+
 std::string scene_summary(const std::string& file, const Scene& scene) {
     std::size_t absorbers = 0, splitters = 0, one_sided = 0;
     for (const Element& e : scene.elements) {
@@ -147,6 +172,24 @@ Answer decide(const Scene& scene, const RenderArgs& args) {
     return answer;
 }
 
+// The first --steps reflections of the path, simulated; how it ends.
+PathEnd draw_first_reflections(const Scene& scene, const RenderArgs& args,
+                               SceneRenderer& renderer) {
+    FirstSegments path(renderer, std::nullopt);
+    SolveOptions options;
+    options.max_steps = args.steps;
+    options.path = &path;
+    // For the progress line only: stop requests end the process at once.
+    SolveMonitor progress(scene, std::nullopt, !args.quiet);
+    options.monitor = &progress;
+    const Answer drawn = solve(scene, options);
+    progress.erase_progress();
+    if (!drawn.decided())
+        renderer.add_caption("path: the first " + std::to_string(args.steps) +
+                             " reflections are drawn (--steps N draws more)");
+    return {drawn.reason, path.last_direction()};
+}
+
 // Every branch of every ray, shaded by reflections so far, and each target
 // marked lit or unlit from solve(): for scenes with splitters, one-sided
 // elements, or several rays or targets (docs/render.md).
@@ -203,8 +246,8 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
     if (branches && !args.certificate.empty())
         throw UsageError("found --certificate for a scene with splitters, one-sided elements or "
                          "several rays or targets, expected a scene of one two-sided trajectory "
-                         "(such scenes have no certificates yet; render draws their branches "
-                         "without one)");
+                         "(render draws such a scene's branches from the scene itself; its "
+                         "certificate lists branch states, not a path)");
     if (branches) {
         draw_branches(scene, args, renderer);
     } else if (!args.certificate.empty()) {
@@ -212,18 +255,25 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         std::optional<std::uint64_t> limit;
         if (steps->count() > 0) limit = args.steps;
         FirstSegments first(renderer, limit);
-        const CertificateClaim claim = read_certificate_path(scene, *cert, args.certificate, first);
+        HeldPrefix held(first);
+        const CertificateClaim claim = read_certificate_path(scene, *cert, args.certificate, held);
         const std::string source = std::filesystem::path(args.certificate).filename().string();
         if (!claim.complete)
             renderer.add_caption("path: incomplete certificate " + source + " (no verdict)");
         else
             renderer.add_caption(verdict_line(claim.answer, claim.reason, claim.reflections) +
                                  " (claimed by " + source + "; 'orthoray verify' checks it)");
-        if (first.cut())
-            renderer.add_caption("path: the first " + std::to_string(args.steps) +
-                                 " segments of the certificate (--steps)");
-        else if (claim.complete)
-            end = {claim.reason, claim.direction};
+        if (!claim.lists_path) {
+            renderer.add_caption("path: simulated; an induction certificate lists none");
+            end = draw_first_reflections(scene, args, renderer);
+        } else {
+            held.release();
+            if (first.cut())
+                renderer.add_caption("path: the first " + std::to_string(args.steps) +
+                                     " segments of the certificate (--steps)");
+            else if (claim.complete)
+                end = {claim.reason, claim.direction};
+        }
     } else {
         // The caption's answer is decided as `solve` decides it, not capped
         // at --steps (in 2D the induction engine answers orbits far longer
@@ -235,19 +285,7 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         else
             renderer.add_caption(undecided_line());
         // The picture: the first --steps reflections of the path.
-        FirstSegments path(renderer, std::nullopt);
-        SolveOptions options;
-        options.max_steps = args.steps;
-        options.path = &path;
-        // For the progress line only: stop requests end the process at once.
-        SolveMonitor progress(scene, std::nullopt, !args.quiet);
-        options.monitor = &progress;
-        const Answer drawn = solve(scene, options);
-        progress.erase_progress();
-        if (!drawn.decided())
-            renderer.add_caption("path: the first " + std::to_string(args.steps) +
-                                 " reflections are drawn (--steps N draws more)");
-        end = {drawn.reason, path.last_direction()};
+        end = draw_first_reflections(scene, args, renderer);
     }
     if (!branches) renderer.finish(end);
     write_picture(renderer, args);

@@ -185,6 +185,35 @@ TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli]
     require_bad_input(run_cli("render " + quote(scene) + " --steps 0 -o " + quote(not_written)));
 }
 
+TEST_CASE("render draws an induction certificate's path by simulating it", "[cli][render]") {
+    // An induction certificate lists the path up to the first reflection
+    // only: the caption is its claim, the picture the simulated path.
+    TempDir dir;
+    const std::string scene = instance("2d/box-corner-3x5.scene");
+    const std::string cert = dir.path("induced.cert");
+    REQUIRE(run_cli("solve " + quote(scene) + " --engine induction --certificate " + quote(cert))
+                .status == 0);
+    REQUIRE(slurp(cert).find("method induction") != std::string::npos);
+    const std::string svg = dir.path("induced.svg");
+    const CliResult r =
+        run_cli("render " + quote(scene) + " --certificate " + quote(cert) + " -o " + quote(svg));
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(r.out == "wrote " + svg + " (6 segments)\n");
+    const std::string picture = slurp(svg);
+    CHECK(picture.find("answer yes, reason hit, 6 reflections (claimed by induced.cert") !=
+          std::string::npos);
+    CHECK(picture.find("path: simulated; an induction certificate lists none") !=
+          std::string::npos);
+    // Cut before its verdict: drawn all the same, and said to be incomplete.
+    const std::string text = slurp(cert);
+    const std::string cut = dir.write("cut.cert", text.substr(0, text.find("answer")));
+    const CliResult c =
+        run_cli("render " + quote(scene) + " --certificate " + quote(cut) + " -o " + quote(svg));
+    CHECK(c.status == 0);
+    CHECK(slurp(svg).find("incomplete certificate cut.cert") != std::string::npos);
+}
+
 TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render][slow]") {
     TempDir dir;
     const std::string png = dir.path("cube.png");

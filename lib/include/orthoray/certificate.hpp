@@ -76,6 +76,10 @@ struct CertificateClaim {
     Reason reason = Reason::limit;
     Integer reflections;
     Vector direction; // escape: the final ray's direction
+    // False for an induction certificate, whose points stop at the first
+    // reflection (docs/induction-certificates.md): the rest of the path is
+    // the induction's to prove, not listed.
+    bool lists_path = true;
 };
 
 // Streams a certificate's points (either format) to `sink`, with a zero

@@ -1,6 +1,7 @@
 // Reads the path a certificate claims, for pictures: the points, and the
 // verdict lines that say how the path ends. Nothing is checked beyond the
-// syntax; a truncated file simply yields the points it has.
+// syntax; a truncated file simply yields the points it has. An induction
+// certificate's statements between its points and its verdict are skipped.
 #include "orthoray/certificate.hpp"
 
 #include "certify/certificate_reader.hpp"
@@ -31,6 +32,12 @@ CertificateClaim read_certificate_path(const Scene& scene, std::istream& certifi
             in.expect("point", dim, "a number");
             sink.visit(in.vector(1, dim), none);
             in.advance();
+        }
+        // An induction certificate lists the path up to the first reflection
+        // only; its proof is the induction, which only `verify` replays.
+        if (in.keyword() == "method") {
+            claim.lists_path = false;
+            while (in.keyword() != "answer") in.advance();
         }
         in.expect("answer", 1, "yes, no or unknown");
         claim.answer = std::string(in.token(1));
