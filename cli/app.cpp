@@ -56,6 +56,7 @@ std::vector<Subcommand> build_cli(CLI::App& app) {
     add(add_solve);
     add(add_verify);
     add(add_pieces);
+    add(add_exchange);
     add(add_generate);
     add(add_bounds);
     add(add_render);

@@ -28,6 +28,7 @@ struct UsageError : std::runtime_error {
 Command add_solve(CLI::App& app);
 Command add_verify(CLI::App& app);
 Command add_pieces(CLI::App& app);
+Command add_exchange(CLI::App& app);
 Command add_generate(CLI::App& app);
 Command add_bounds(CLI::App& app);
 Command add_convert(CLI::App& app);

@@ -20,12 +20,21 @@ Command add_pieces(CLI::App& app) {
                   "Coordinates are the scene's lattice coordinates (docs/lattice.md).\n\n"
                   "Example:\n"
                   "  orthoray pieces instances/2d/box-corner-3x5.scene");
+    auto json = std::make_shared<bool>(false);
     cmd->add_option("FILE", *file, "a 2D scene whose ray moves in both x and y")->required();
+    cmd->add_flag("--json", *json,
+                  "one JSON object: the elements and every piece (docs/piece-tables.md); "
+                  "axis-parallel scenes only");
     add_scene_format_option(cmd, *format);
-    return [file, format] {
+    return [file, format, json] {
         const Scene scene = load_scene(*file, scene_format_named(*format));
+        if (*json && scene.has_diagonal())
+            throw UsageError("found --json for a scene with diagonal elements, expected an "
+                             "axis-parallel scene (the text form shows the map on the "
+                             "eight-sheeted cover; 'orthoray exchange --json' exports it)");
         std::ostringstream out; // nothing reaches stdout unless the tables exist
-        if (!write_piece_tables(scene, out).available)
+        if (!write_piece_tables(scene, out, *json ? PieceTableFormat::json : PieceTableFormat::text)
+                 .available)
             throw UsageError("piece tables exist only for 2D scenes whose ray moves in both x and "
                              "y; '" +
                              *file + "' is not one");

@@ -184,7 +184,7 @@ TEST_CASE("an unknown command is named in the message", "[cli]") {
     const CliResult r = run_cli("frobnicate");
     require_bad_input(r);
     CHECK(r.err ==
-          "orthoray: found the command 'frobnicate', expected solve, verify, pieces, "
+          "orthoray: found the command 'frobnicate', expected solve, verify, pieces, exchange, "
           "generate, bounds, render, convert, puzzle, realistic, batch or version (see 'orthoray "
           "--help')\n");
 }

@@ -11,9 +11,11 @@
 #include "orthoray/solve.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <random>
+#include <sstream>
 #include <vector>
 
 using namespace orthoray;
@@ -170,4 +172,83 @@ TEST_CASE("only a 2D ray that reflects has an exchange", "[exchange-api]") {
     // 3D scenes are simulated.
     CHECK_FALSE(exchange_of(read_scene("dim 3\nmirror x 2 y 0 1 z 0 1\nray 0 0 0 1 1 1\n"
                                        "target 5 5 5\n")));
+}
+
+namespace {
+
+// The exported exchange read back as a reader would: each state x goes to
+// image + (x - start) of the piece holding it, until a piece where the
+// segment passes the target or the ray does not reflect. The orbit of 0,
+// iterated directly (no induction), must give the simulated answer.
+std::string answer_of_export(const nlohmann::json& doc, std::uint64_t cap) {
+    std::vector<std::int64_t> start, length, image;
+    for (const nlohmann::json& p : doc["pieces"]) {
+        start.push_back(p["start"].get<std::int64_t>());
+        length.push_back(p["length"].get<std::int64_t>());
+        image.push_back(p["image"].get<std::int64_t>());
+    }
+    std::int64_t x = 0;
+    for (std::uint64_t i = 0; i < cap; ++i) {
+        const std::size_t k = static_cast<std::size_t>(
+            std::upper_bound(start.begin(), start.end(), x) - start.begin() - 1);
+        const nlohmann::json& piece = doc["pieces"][k];
+        const std::string kind = piece["kind"].get<std::string>();
+        if (piece["hit"].get<bool>()) return "hit " + std::to_string(i + 1);
+        if (kind != "reflect") return kind + " " + std::to_string(i + 1);
+        x = image[k] + (x - start[k]);
+        if (x == 0) return "cycle " + std::to_string(i + 1);
+    }
+    return "unknown";
+}
+
+} // namespace
+
+TEST_CASE("the exported exchange is the two-row form, and iterating it gives the answer",
+          "[exchange-api]") {
+    std::mt19937_64 rng(2611);
+    const int goal = test::case_count(300);
+    int compared = 0;
+    for (int attempt = 0; compared < goal && attempt < 20 * goal; ++attempt) {
+        const Scene scene = random_2d_scene(rng);
+        INFO("scene:\n" << write_scene(scene));
+        const std::optional<IntervalExchange> exchange = exchange_of(scene);
+        if (!exchange || exchange->size > 1'000'000) continue;
+        SolveOptions o;
+        o.engine = Engine::lattice;
+        const Answer simulated = solve(scene, o);
+        if (simulated.reason != Reason::cycle && simulated.reflections == 0) continue;
+        std::ostringstream json, text;
+        write_exchange(*exchange, json, ExchangeFormat::json);
+        write_exchange(*exchange, text, ExchangeFormat::text);
+        const nlohmann::json doc = nlohmann::json::parse(json.str());
+        REQUIRE(doc["format"] == "orthoray-exchange");
+        REQUIRE(doc["size"].get<std::int64_t>() == exchange->size.get_si());
+        // top: labels by start; bottom: labels by image; lengths by label.
+        const auto& pieces = doc["pieces"];
+        const std::size_t k = pieces.size();
+        REQUIRE(doc["top"].size() == k);
+        REQUIRE(doc["bottom"].size() == k);
+        std::int64_t at = 0;
+        for (std::size_t i = 0; i < k; ++i) {
+            const auto& p = pieces[doc["top"][i].get<std::size_t>()];
+            REQUIRE(p["start"].get<std::int64_t>() == at);
+            REQUIRE(doc["lengths"][i] == p["length"]);
+            at += p["length"].get<std::int64_t>();
+        }
+        at = 0;
+        for (std::size_t i = 0; i < k; ++i) {
+            const auto& p = pieces[doc["bottom"][i].get<std::size_t>()];
+            REQUIRE(p["image"].get<std::int64_t>() == at);
+            at += p["length"].get<std::int64_t>();
+        }
+        REQUIRE(at == doc["size"].get<std::int64_t>());
+        // The text form lists the same pieces and rows.
+        const std::string lines = text.str();
+        REQUIRE(lines.starts_with("orthoray-exchange 1\n"));
+        REQUIRE(static_cast<std::size_t>(std::count(lines.begin(), lines.end(), '\n')) ==
+                k + 9 + (exchange->transversals.empty() ? 0 : 1));
+        REQUIRE(answer_of_export(doc, 2'000'000) == summary(simulated));
+        ++compared;
+    }
+    CHECK(compared == goal);
 }

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <vector>
 
 namespace orthoray {
@@ -68,13 +69,22 @@ struct IntervalExchange {
 
 // The exchange the induction engine builds for `scene`: nothing unless the
 // scene is 2D, its direction has two nonzero components, the ray reflects at
-// least once, and the piece tables stay within the engine's size cap. For a
+// least once, it can meet no one-sided element (two states could step to
+// one), and the piece tables stay within the engine's size cap. For a
 // scene with diagonal elements it is the exchange on the eight-sheeted
 // cover (docs/induction.md, section 6), any direction allowed, with no
 // `transversals` or `scale` (its states are lifted states, not lattice
 // points); nothing when two states step to one there, or when the scene
 // has one-sided elements.
 std::optional<IntervalExchange> exchange_of(const Scene& scene);
+
+// The exchange as another interval-exchange library reads it
+// (docs/induction.md, "Exporting the exchange"): its size, each piece
+// (label, start, length, image, what happens there), and the two rows of
+// labels in the order of the pieces' domains and of their images, which
+// with the lengths are the usual two-row description of an exchange.
+enum class ExchangeFormat { text, json };
+void write_exchange(const IntervalExchange& exchange, std::ostream& out, ExchangeFormat format);
 
 // Sees an induction: the exchange, then every step in the words of
 // docs/induction-certificates.md (an accelerated step, a "cycle", is one

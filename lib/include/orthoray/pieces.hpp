@@ -15,8 +15,16 @@ struct PieceTableSummary {
     std::size_t mirrors = 0, pieces = 0;
 };
 
+enum class PieceTableFormat {
+    text, // one line a piece after a commented header
+    json, // one object (docs/piece-tables.md, "JSON"); axis-parallel scenes only
+};
+
 // Writes the tables in lattice coordinates, after a header giving the scale
-// factor of each axis (scene coordinate = lattice coordinate / scale).
-PieceTableSummary write_piece_tables(const Scene& scene, std::ostream& out);
+// factor of each axis (scene coordinate = lattice coordinate / scale). For a
+// scene with diagonals the text is the first-return map on the eight-sheeted
+// cover (docs/induction.md); JSON is not available there.
+PieceTableSummary write_piece_tables(const Scene& scene, std::ostream& out,
+                                     PieceTableFormat format = PieceTableFormat::text);
 
 } // namespace orthoray

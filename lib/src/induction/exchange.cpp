@@ -36,6 +36,9 @@ std::optional<IntervalExchange> exchange_of(const Scene& scene) {
     if (scene.dim != 2) return std::nullopt;
     const lattice::LatticeScene ls = lattice::make_lattice(scene);
     if (ls.dim != 2) return std::nullopt; // a direction along an axis: no exchange
+    // A one-way mirror the ray can meet lets two states step to one: the
+    // first-return map is no bijection, so there is no exchange to give.
+    if (ls.one_sided) return std::nullopt;
     // The exchange is in exact integers whatever the tables ran on; the
     // narrowest type the scene's bound allows is the fastest.
     if (ls.magnitude < lattice::int64_limit()) return exchange_on<std::int64_t>(ls);

@@ -38,7 +38,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <ostream>
 #include <span>
 #include <vector>
 
@@ -130,8 +129,29 @@ public:
     // other piece's segments miss the target, and Shot::near_target says so.
     void mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]);
 
-    // One line a piece: mirror, direction, first position, and where it goes.
-    void dump(std::ostream& out) const;
+    // A piece as the dump shows it: on mirror `element` leaving in direction
+    // `negative`, the positions from `from` on (to the next row's) go to
+    // mirror `next` (reflect), or nowhere (escape), or stop (absorb), with
+    // the hit at t = t0 + slope * (u - from), reflecting on the axes `flip`.
+    struct Row {
+        std::uint32_t element = 0;
+        unsigned negative = 0;
+        Integer from, t0;
+        Kind kind = Kind::escape;
+        std::uint32_t next = 0;
+        int slope = 0;
+        unsigned flip = 0;
+    };
+    // Calls visit(row) for every piece, by mirror, direction and position.
+    template <class Visit>
+    void for_each_row(Visit&& visit) const {
+        for (std::uint32_t m = 0; m < tangent_.size(); ++m)
+            for (unsigned d = 0; d < 4; ++d)
+                for (const Piece& p : pieces(m, d))
+                    visit(Row{m, d, to_integer(p.from), to_integer(p.t0), p.kind(),
+                              next_mirror_[static_cast<std::size_t>(&p - pieces_.data())],
+                              p.slope(), p.flip});
+    }
 
 private:
     // The piece holding position u: the last one of the range
@@ -421,29 +441,6 @@ void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&t
             });
             return acted;
         });
-}
-
-template <class Int>
-void PieceTable<Int>::dump(std::ostream& out) const {
-    static const char* const direction[] = {"+x+y", "-x+y", "+x-y", "-x-y"};
-    for (std::uint32_t m = 0; m < tangent_.size(); ++m)
-        for (unsigned d = 0; d < 4; ++d)
-            for (const Piece& p : pieces(m, d)) {
-                out << "element " << m << ' ' << direction[d] << " from " << to_integer(p.from)
-                    << ": ";
-                if (p.kind() == Kind::escape) {
-                    out << "escape\n";
-                    continue;
-                }
-                out << (p.kind() == Kind::absorb
-                            ? "absorbed"
-                            : "element " + std::to_string(next_mirror_[&p - pieces_.data()]))
-                    << " at t = " << to_integer(p.t0);
-                if (p.slope() != 0) out << (p.slope() > 0 ? " + (u - from)" : " - (u - from)");
-                if (p.kind() == Kind::reflect)
-                    out << ", flip " << ((p.flip & 1u) ? "x" : "") << ((p.flip & 2u) ? "y" : "");
-                out << '\n';
-            }
 }
 
 static_assert(sizeof(PieceTable<std::int64_t>::Piece) == 24, "a piece is meant to be 24 bytes");
