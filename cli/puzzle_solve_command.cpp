@@ -78,7 +78,14 @@ void write_picture(const LazorLevel& solved, const PuzzleSolveArgs& args, Output
                          " points, " + std::to_string(scene.rays.size()) + " lasers");
     walk_branches(scene, renderer, 100'000);
     const Answer answer = solve(scene);
-    renderer.mark_targets(answer.targets);
+    // A level of one laser and one point is a single trajectory: its one
+    // target is lit when the answer is yes.
+    std::vector<TargetAnswer> targets = answer.targets;
+    if (!answer.illumination()) {
+        targets.assign(1, TargetAnswer{});
+        targets[0].status = answer.yes() ? TargetAnswer::Status::lit : TargetAnswer::Status::unlit;
+    }
+    renderer.mark_targets(targets);
     if (!html) {
         renderer.write_svg(out.stream());
     } else {

@@ -173,3 +173,18 @@ def test_illumination_branches(browser):
     assert visible_segments(browser) == 3
     assert hover_text(browser, "#markers circle.target.unlit") == "target 2 (unlit): (2, 3)"
     check_screenshot(browser, "branches")
+
+
+def test_puzzle_grid(browser):
+    page = OUT / "puzzle.html"
+    level = SOURCE / "tests/fuzz/corpus/lazor/three-reflect.bff"
+    result = subprocess.run([CLI, "puzzle", "solve", str(level), "--render", str(page)],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    load(browser, page)
+    assert browser.find_element(By.ID, "answer").text.startswith("answer yes")
+    # A 3 x 3 grid has 4 + 4 lines; three blocks, four one-sided edges each.
+    assert count(browser, "#grid line") == 8
+    assert count(browser, "#elements line.mirror") == 12
+    assert count(browser, "#markers circle.target.lit") == 1
+    check_screenshot(browser, "puzzle")

@@ -99,12 +99,13 @@
     return [p[0], p[1], dim === 3 ? p[2] : 0];
   }
 
-  // The frame: a rectangle in 2D, a box with its axes named in 3D.
+  // The frame: a rectangle in 2D (a puzzle's grid stands for it), a box
+  // with its axes named in 3D.
   const box = [0, 1, 2].map((j) => (j < dim ? extent[j] : 0));
-  if (dim === 2) {
+  if (dim === 2 && data.grid.length === 0) {
     const c = [[0, 0], [box[0], 0], [box[0], box[1]], [0, box[1]]];
     polygon(layers.frame, c, { class: "frame" });
-  } else {
+  } else if (dim === 3) {
     for (let j = 0; j < 3; ++j)
       for (let corner = 0; corner < 4; ++corner) {
         const a = [0, 0, 0];
@@ -211,7 +212,16 @@
   const view = {};
   function fit() {
     if (dim === 2) {
-      home = [-margin, -margin, extent[0] * scale + 2 * margin, extent[1] * scale + 2 * margin];
+      // The frame, and a puzzle's grid where it reaches beyond the frame.
+      const xs = [0, extent[0]], ys = [0, extent[1]];
+      for (const ends of data.grid)
+        for (const p of ends) {
+          xs.push(p[0]);
+          ys.push(p[1]);
+        }
+      const [left, top] = project([Math.min(...xs), Math.max(...ys)]);
+      const [right, bottom] = project([Math.max(...xs), Math.min(...ys)]);
+      home = [left - margin, top - margin, right - left + 2 * margin, bottom - top + 2 * margin];
     } else {
       const r = Math.hypot(extent[0], extent[1], extent[2]) * 0.55 * scale;
       home = [-r - margin, -r - margin, 2 * (r + margin), 2 * (r + margin)];
