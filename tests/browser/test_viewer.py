@@ -2,9 +2,9 @@
 real browser: Debian's headless Chromium, driven by Selenium. For a 2D
 path, a 3D path and an illumination scene the page must draw the scene's
 elements and the expected segments, show the answer, hide segments as the
-step slider moves back (and move the ray's head), read out exact
-coordinates on hover, rotate in 3D, and paint the ray's colour in a
-screenshot. Without chromium, chromedriver or python3-selenium the session
+step slider moves back (and move the ray's head), play the path to its
+end, zoom on the wheel, read out exact coordinates on hover, rotate in 3D,
+draw a puzzle's grid, and paint the ray's colour in a screenshot. Without chromium, chromedriver or python3-selenium the session
 exits with status 77 (conftest.py), which ctest reports as skipped."""
 
 import os
@@ -25,6 +25,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import WebDriverWait
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 DRIVER = shutil.which("chromedriver")
@@ -91,6 +92,10 @@ def head(browser):
     return float(h.get_attribute("cx")), float(h.get_attribute("cy"))
 
 
+def view_width(browser):
+    return browser.execute_script("return document.getElementById('picture').viewBox.baseVal.width")
+
+
 def hover_text(browser, selector, index=0):
     target = browser.find_elements(By.CSS_SELECTOR, selector)[index]
     ActionChains(browser).move_to_element(target).perform()
@@ -132,7 +137,22 @@ def test_2d_path(browser):
     # the first point is the start, under the start's marker.
     assert hover_text(browser, "#points circle.point:not(.hidden)", 1) == "point (5/2, 5/4)"
     assert hover_text(browser, "#elements line") == "mirror x = 5/2, y in [0, 3/2] (line 13)"
-    move_slider(browser, 4)
+    # Play from step 0 runs the slider to the end, then offers play again
+    # (waited for, with a guard, not timed).
+    move_slider(browser, 0)
+    browser.find_element(By.ID, "play").click()
+    WebDriverWait(browser, 20).until(
+        lambda b: visible_segments(b) == 4 and b.find_element(By.ID, "play").text == "play")
+    assert head(browser) == end
+    # The wheel zooms in around the pointer: the view box narrows.
+    width = view_width(browser)
+    browser.execute_script(
+        "const s = document.getElementById('picture'); const r = s.getBoundingClientRect();"
+        "s.dispatchEvent(new WheelEvent('wheel', {deltaY: -300, clientX: r.x + r.width / 2,"
+        " clientY: r.y + r.height / 2, bubbles: true, cancelable: true}));")
+    zoomed = view_width(browser)
+    assert zoomed < width * 0.8
+    browser.find_element(By.ID, "reset-view").click()
     rows = check_screenshot(browser, "path-2d")
     assert has_colour(rows, MIRROR_BLUE)
 
