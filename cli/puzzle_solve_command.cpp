@@ -52,17 +52,48 @@ void print_text(const LazorSolution& s, const std::string& limit, double seconds
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
-// The solved level's scene as SVG: every branch of every laser (at most
-// 10^5 states), each point marked lit or not by the illumination engine,
-// as `orthoray render` draws scenes with splitters and several rays.
+// The lines between the level's cells, in the scene's units (a block is 2
+// units wide, docs/puzzles.md), for the interactive viewer.
+std::vector<std::pair<Vector, Vector>> cell_grid(const LazorLevel& level) {
+    std::vector<std::pair<Vector, Vector>> lines;
+    const Rational width(2 * level.width), height(2 * level.height);
+    for (int c = 0; c <= level.width; ++c)
+        lines.push_back({{Rational(2 * c), 0, 0}, {Rational(2 * c), height, 0}});
+    for (int r = 0; r <= level.height; ++r)
+        lines.push_back({{0, Rational(2 * r), 0}, {width, Rational(2 * r), 0}});
+    return lines;
+}
+
+// The solved level's scene as SVG, or as the interactive viewer when the
+// name ends in .html (with the cell grid): every branch of every laser (at
+// most 10^5 states), each point marked lit or not by the illumination
+// engine, as `orthoray render` draws scenes with splitters and several rays.
 void write_picture(const LazorLevel& solved, const PuzzleSolveArgs& args, OutputFile& out) {
     const Scene scene = lazor_scene(solved);
-    SceneRenderer renderer(scene);
+    const bool html = args.picture.ends_with(".html") || args.picture.ends_with(".HTML");
+    RenderOptions options;
+    if (html) options.viewer_segments = 5000;
+    SceneRenderer renderer(scene, options);
     renderer.add_caption("solved " + args.level + ": " + std::to_string(solved.points.size()) +
                          " points, " + std::to_string(scene.rays.size()) + " lasers");
     walk_branches(scene, renderer, 100'000);
-    renderer.mark_targets(solve(scene).targets);
-    renderer.write_svg(out.stream());
+    const Answer answer = solve(scene);
+    // A level of one laser and one point is a single trajectory: its one
+    // target is lit when the answer is yes.
+    std::vector<TargetAnswer> targets = answer.targets;
+    if (!answer.illumination()) {
+        targets.assign(1, TargetAnswer{});
+        targets[0].status = answer.yes() ? TargetAnswer::Status::lit : TargetAnswer::Status::unlit;
+    }
+    renderer.mark_targets(targets);
+    if (!html) {
+        renderer.write_svg(out.stream());
+    } else {
+        renderer.add_caption(std::string("answer ") + answer_word(answer) +
+                             (answer.yes() ? ": the placement shown lights every point" : ""));
+        renderer.set_grid(cell_grid(solved));
+        renderer.write_html(out.stream(), "orthoray puzzle: " + args.level);
+    }
     out.commit();
 }
 
@@ -147,8 +178,9 @@ Command add_puzzle_solve(CLI::App& puzzle) {
     cmd->add_option("-o,--output", args->out,
                     "write the solved level here (.bff, the blocks placed in its grid)");
     cmd->add_option("--render", args->picture,
-                    "draw the solved level here (SVG): every laser's branches, each point "
-                    "gold when lit (as 'orthoray render' draws scenes)");
+                    "draw the solved level here (SVG, or the interactive viewer with the "
+                    "cell grid when the name ends in .html): every laser's branches, each "
+                    "point gold when lit (as 'orthoray render' draws scenes)");
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
         ->check(CLI::Range(1u, 1024u));
     cmd->add_flag("--all", args->all,

@@ -21,7 +21,7 @@ namespace orthoray::cli {
 namespace {
 
 struct RenderArgs {
-    std::string file, out, certificate, format;
+    std::string file, out, html, certificate, format;
     std::uint64_t steps = 1000;
     double timeout = 0;
     bool quiet = false;
@@ -236,10 +236,25 @@ void write_picture(const SceneRenderer& renderer, const RenderArgs& args) {
     out.commit();
 }
 
+// Segments (with their exact points) the interactive viewer keeps: a
+// browser steps through a few thousand smoothly, and memory stays bounded.
+constexpr std::size_t viewer_segments = 5000;
+
+// The interactive viewer's page (docs/render.md, "Interactive viewer"),
+// through OutputFile like every other output.
+void write_viewer(const SceneRenderer& renderer, const RenderArgs& args) {
+    OutputFile out(args.html, {args.file, args.certificate, args.out}, "the viewer page");
+    renderer.write_html(out.stream(),
+                        "orthoray: " + std::filesystem::path(args.file).filename().string());
+    out.commit();
+}
+
 int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* timeout) {
     stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
     const Scene scene = load_scene(args.file, scene_format_named(args.format));
-    SceneRenderer renderer(scene);
+    RenderOptions look;
+    if (!args.html.empty()) look.viewer_segments = viewer_segments;
+    SceneRenderer renderer(scene, look);
     renderer.add_caption(scene_summary(args.file, scene));
     PathEnd end;
     const bool branches = !scene.single_trajectory() || scene.has_one_sided();
@@ -288,9 +303,19 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         end = draw_first_reflections(scene, args, renderer);
     }
     if (!branches) renderer.finish(end);
-    write_picture(renderer, args);
-    std::cout << "wrote " << args.out << " (" << renderer.segments() << " segments"
-              << (renderer.thinned() ? ", thinned" : "") << ")\n";
+    if (!args.out.empty()) {
+        write_picture(renderer, args);
+        std::cout << "wrote " << args.out << " (" << renderer.segments() << " segments"
+                  << (renderer.thinned() ? ", thinned" : "") << ")\n";
+    }
+    if (!args.html.empty()) {
+        write_viewer(renderer, args);
+        std::cout << "wrote " << args.html << " (" << renderer.segments() << " segments"
+                  << (renderer.segments() > viewer_segments
+                          ? ", the first " + std::to_string(viewer_segments) + " in the viewer"
+                          : std::string())
+                  << ")\n";
+    }
     return yes;
 }
 
@@ -309,13 +334,19 @@ Command add_render(CLI::App& app) {
                   "Example:\n"
                   "  orthoray render instances/2d/box-corner-3x5.scene -o box.svg\n"
                   "  orthoray solve maze.scene --certificate maze.cert\n"
-                  "  orthoray render maze.scene --certificate maze.cert -o maze.png\n\n"
+                  "  orthoray render maze.scene --certificate maze.cert -o maze.png\n"
+                  "  orthoray render maze.scene --html maze.html\n\n"
                   "Exit status: 0 written, 2 bad input or usage (docs/render.md), 3 stopped\n"
                   "by --timeout, SIGINT or SIGTERM (nothing written), 5 a failed write.");
     cmd->add_option("FILE", args->file, "the scene (.scene text or JSON)")->required();
     cmd->add_option("-o,--output", args->out,
-                    "the picture to write: NAME.svg, or NAME.png (default: FILE's name with "
-                    ".svg, in the current directory)");
+                    "the picture to write: NAME.svg, NAME.png, or NAME.html for the interactive "
+                    "viewer (default: FILE's name with .svg, in the current directory, unless "
+                    "--html is given)");
+    cmd->add_option("--html", args->html,
+                    "write the interactive viewer here: one self-contained HTML page with a step "
+                    "slider, play/pause, zoom, pan, 3D rotation and the exact coordinates of "
+                    "each point on hover (the first 5000 segments)");
     cmd->add_option("--certificate", args->certificate,
                     "draw the path this certificate lists (text or jsonl) instead of solving");
     CLI::Option* steps =
@@ -329,7 +360,15 @@ Command add_render(CLI::App& app) {
     cmd->add_flag("--quiet", args->quiet,
                   "no progress line (it is shown on long runs only when stderr is a terminal)");
     return [args, steps, timeout] {
-        if (args->out.empty())
+        if (args->out.ends_with(".html") || args->out.ends_with(".HTML")) {
+            if (!args->html.empty())
+                throw UsageError("found -o " + args->out + " and --html " + args->html +
+                                 ", expected one HTML page (-o NAME.svg or NAME.png draws the "
+                                 "picture beside it)");
+            args->html = args->out;
+            args->out.clear();
+        }
+        if (args->out.empty() && args->html.empty())
             args->out = std::filesystem::path(args->file).stem().string() + ".svg";
         return run(*args, steps, timeout);
     };

@@ -13,6 +13,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace orthoray {
@@ -24,6 +25,10 @@ struct RenderOptions {
     // over all views. Beyond them the picture is cut and the caption says so.
     std::size_t max_path_vertices = 200'000;
     std::size_t max_element_shapes = 100'000;
+    // Segments kept, with their exact points, for write_html (0: none are
+    // kept, and the page shows the scene alone). Memory grows with them, so
+    // the interactive viewer keeps the first few thousand only.
+    std::size_t viewer_segments = 0;
 };
 
 // How the drawn path ends, so the last piece can be drawn: on to the target
@@ -104,6 +109,15 @@ public:
     bool thinned() const;
 
     void write_svg(std::ostream& out) const;
+
+    // Lines drawn under everything else in the HTML viewer, in scene
+    // units: a puzzle's cell grid.
+    void set_grid(const std::vector<std::pair<Vector, Vector>>& lines);
+    // The interactive viewer (docs/render.md): one self-contained HTML page
+    // with the scene, the first RenderOptions::viewer_segments segments with
+    // their exact points, the caption and a step slider, zoom, pan and, in
+    // 3D, rotation. `title` is the page's heading.
+    void write_html(std::ostream& out, const std::string& title) const;
 
 private:
     struct Impl;

@@ -9,6 +9,8 @@
 #include "render/svg_writer.hpp"
 #include "render/view_axes.hpp"
 #include "render/view_layout.hpp"
+#include "render/viewer_html.hpp"
+#include "render/viewer_record.hpp"
 
 #include <algorithm>
 #include <array>
@@ -64,6 +66,7 @@ struct SceneRenderer::Impl {
     const Scene& scene;
     RenderOptions options;
     render::Frame frame;
+    render::ViewerRecord viewer; // what write_html shows, exactly
     std::vector<View> views;
     double page_width = 0, page_height = 0;
     std::vector<std::string> caption;
@@ -80,7 +83,8 @@ struct SceneRenderer::Impl {
     static constexpr std::size_t max_absorptions = 10'000;
     std::vector<TargetAnswer> target_status; // empty: targets drawn plain
 
-    Impl(const Scene& s, const RenderOptions& o) : scene(s), options(o), frame(s) {
+    Impl(const Scene& s, const RenderOptions& o)
+        : scene(s), options(o), frame(s), viewer(s, frame, o.viewer_segments) {
         render::PageLayout page = render::lay_out_views(frame, scene.dim, options.view_size);
         const std::size_t vertices = options.max_path_vertices / page.views.size();
         for (render::ViewPlacement& v : page.views) views.emplace_back(std::move(v), vertices);
@@ -177,6 +181,7 @@ struct SceneRenderer::Impl {
         const Point3 from = frame.normalised(s.from);
         const std::optional<Point3> to =
             s.escape ? exit_point(from, s.direction) : frame.normalised(s.to);
+        viewer.segment(s, to);
         if (s.absorbed && absorptions.size() < max_absorptions) absorptions.push_back(*to);
         if (!to) return;
         for (View& v : views) {
@@ -194,6 +199,7 @@ struct SceneRenderer::Impl {
 
     void visit(const Vector& point) {
         const Point3 n = frame.normalised(point);
+        viewer.visit(point);
         if (last) segment(*last, n);
         last = n;
         ++visits;
@@ -202,6 +208,8 @@ struct SceneRenderer::Impl {
     void finish(const PathEnd& e) {
         end = e;
         if (!last) return;
+        viewer.finish(e,
+                      e.reason == Reason::escape ? exit_point(*last, e.direction) : std::nullopt);
         if (e.reason == Reason::hit) {
             segment(*last, frame.normalised(scene.target()));
         } else if (e.reason == Reason::escape) {
@@ -501,6 +509,7 @@ void SceneRenderer::segment(const BranchSegment& segment) {
 
 void SceneRenderer::mark_targets(const std::vector<TargetAnswer>& targets) {
     impl_->target_status = targets;
+    impl_->viewer.mark_targets(targets);
 }
 
 void SceneRenderer::add_caption(const std::string& line) {
@@ -517,6 +526,19 @@ bool SceneRenderer::thinned() const {
 
 void SceneRenderer::write_svg(std::ostream& out) const {
     impl_->write(out);
+}
+
+void SceneRenderer::set_grid(const std::vector<std::pair<Vector, Vector>>& lines) {
+    impl_->viewer.set_grid(lines);
+}
+
+void SceneRenderer::write_html(std::ostream& out, const std::string& title) const {
+    // The SVG's thinning does not touch the viewer's segments, so its caption
+    // line is left out; the frame's scales are the viewer's too.
+    std::vector<std::string> caption = impl_->caption;
+    if (impl_->frame.separate_scales)
+        caption.push_back("axes scaled separately (the scene is very elongated)");
+    render::write_viewer_html(out, title, impl_->viewer.to_json(caption));
 }
 
 } // namespace orthoray
