@@ -69,7 +69,7 @@ struct Row {
     double cells_per_element = 0; // asked for
     double grid_cells = 0;        // cells built
     double h_over_length = 0;     // cell side / mean element side
-    double cells = 0, tests = 0, box_tests = 0, free_path = 0;
+    double cells = 0, tests = 0, box_tests = 0, free_path = 0, free_path_model = 0;
     std::array<double, 5> quantiles{}; // tests: p10, p50, p90, p99, max
     double cells_p90 = 0;
     Prediction predicted;
@@ -154,6 +154,7 @@ void run_scene(std::size_t n, std::size_t shots, int runs, std::vector<Row>& row
         for (int j = 0; j < M; ++j) h[j] = static_cast<double>(plain.cell_side(j));
         row.h_over_length = h[0] / model.mean_length;
         row.predicted = predict_uniform(model, h);
+        row.free_path_model = model.free_path();
         measure<M>(states, counted, plain, runs, row);
         fit_rows.push_back({row.cells, row.tests, row.ns});
         rows.push_back(row);
@@ -182,6 +183,7 @@ void run_scene(std::size_t n, std::size_t shots, int runs, std::vector<Row>& row
             row.predicted.tests += by_direction[s.negative].tests / states.size();
         }
         row.h_over_length = static_cast<double>(plain.cell_side(0, 0)) / model.mean_length;
+        row.free_path_model = model.free_path();
         measure<M>(states, counted, plain, runs, row);
         rows.push_back(row);
     }
@@ -229,9 +231,10 @@ int main(int argc, char** argv) {
                  "cells (model)", "cells p90", "tests", "tests (model)",
                  "tests p10/p50/p90/p99/max", "box tests", "ns/shot"});
     Csv csv(csv_path);
-    csv.row({"dim", "mirrors", "structure", "cells_per_element", "grid_cells", "h_over_length",
-             "cells", "cells_model", "cells_p90", "tests", "tests_model", "tests_p10", "tests_p50",
-             "tests_p90", "tests_p99", "tests_max", "box_tests", "free_path", "ns_per_shot"});
+    csv.row({"dim",           "mirrors",   "structure",   "cells_per_element", "grid_cells",
+             "h_over_length", "cells",     "cells_model", "cells_p90",         "tests",
+             "tests_model",   "tests_p10", "tests_p50",   "tests_p90",         "tests_p99",
+             "tests_max",     "box_tests", "free_path",   "free_path_model",   "ns_per_shot"});
     for (const Row& r : rows) {
         const auto& q = r.quantiles;
         table.add({std::to_string(r.dim), std::to_string(r.n), r.structure,
@@ -241,12 +244,26 @@ int main(int argc, char** argv) {
                    fixed(q[0], 0) + " / " + fixed(q[1], 0) + " / " + fixed(q[2], 0) + " / " +
                        fixed(q[3], 0) + " / " + fixed(q[4], 0),
                    fixed(r.box_tests), fixed(r.ns, 1)});
-        csv.row({std::to_string(r.dim), std::to_string(r.n), r.structure,
-                 fixed(r.cells_per_element, 4), fixed(r.grid_cells, 0), fixed(r.h_over_length, 4),
-                 fixed(r.cells, 4), fixed(r.predicted.cells, 4), fixed(r.cells_p90, 0),
-                 fixed(r.tests, 4), fixed(r.predicted.tests, 4), fixed(q[0], 0), fixed(q[1], 0),
-                 fixed(q[2], 0), fixed(q[3], 0), fixed(q[4], 0), fixed(r.box_tests, 4),
-                 fixed(r.free_path, 1), fixed(r.ns, 2)});
+        csv.row({std::to_string(r.dim),
+                 std::to_string(r.n),
+                 r.structure,
+                 fixed(r.cells_per_element, 4),
+                 fixed(r.grid_cells, 0),
+                 fixed(r.h_over_length, 4),
+                 fixed(r.cells, 4),
+                 fixed(r.predicted.cells, 4),
+                 fixed(r.cells_p90, 0),
+                 fixed(r.tests, 4),
+                 fixed(r.predicted.tests, 4),
+                 fixed(q[0], 0),
+                 fixed(q[1], 0),
+                 fixed(q[2], 0),
+                 fixed(q[3], 0),
+                 fixed(q[4], 0),
+                 fixed(r.box_tests, 4),
+                 fixed(r.free_path, 1),
+                 fixed(r.free_path_model, 1),
+                 fixed(r.ns, 2)});
     }
     table.print();
 
