@@ -12,7 +12,10 @@
 //                     the nonzero sides; box faces count half, w_e = 1/2,
 //                     since a ray inside meets each face from one side only)
 //   free path         E[T] = 1 / lambda
-//   uniform grid      cells  = 1 + E[T] * sum_j 1 / h_j
+//   uniform grid      cells  = 1 + E[T] * sum_j 1 / h_j - phi
+//                     (phi: the faces' share of the hits; a face lies on a
+//                     grid wall, so a shot that starts or ends on one
+//                     crosses half a wall fewer on that axis, on average)
 //                     m      = sum_e prod_j (ext_j(e) / h_j + 1) / cells in V
 //                     tests  = 1 + m * cells
 //   cross-section     mu     = sum_e w_e prod_{j >= 1} (ext_j + ext_0 + h_j) / V
@@ -35,6 +38,7 @@ struct ModelScene {
     std::vector<std::array<double, 3>> extent; // each element's box sides
     std::vector<double> weight;                // 1, or 1/2 for a face of the box
     double volume = 1, lambda = 0;
+    double face_share = 0;  // the faces' share of lambda
     double mean_length = 0; // mean side of the inner elements (their nonzero sides)
 
     explicit ModelScene(const lattice::LatticeScene& ls) : dim(ls.dim) {
@@ -62,10 +66,12 @@ struct ModelScene {
             extent.push_back(x);
             weight.push_back(face ? 0.5 : 1);
             lambda += weight.back() * area;
+            if (face) face_share += weight.back() * area;
             if (!face)
                 for (int j = 0; j < dim; ++j)
                     if (j != e.axis) sides += x[j], ++count;
         }
+        face_share /= lambda;
         lambda /= volume;
         mean_length = sides / count;
     }
@@ -89,7 +95,7 @@ inline Prediction predict_uniform(const ModelScene& s, const std::array<double, 
         walls += 1 / h[j];
     }
     Prediction p;
-    p.cells = 1 + s.free_path() * walls;
+    p.cells = 1 + s.free_path() * walls - s.face_share;
     p.tests = 1 + registrations / cells * p.cells;
     return p;
 }
