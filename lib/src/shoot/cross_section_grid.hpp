@@ -34,9 +34,13 @@
 // Each direction has its own bundle, so one-sided elements cost nothing at
 // query time: a bundle registers only the elements that act on its
 // direction (LatticeElement::acting), and the others are never seen.
+//
+// `Counter` (shot_counter.hpp) is told the cell read and each member scanned;
+// the default counts nothing and costs nothing.
 #pragma once
 
 #include "shoot/element_box.hpp"
+#include "shoot/shot_counter.hpp"
 #include "shoot/uniform_grid.hpp" // Shot
 
 #include <algorithm>
@@ -46,7 +50,7 @@
 
 namespace orthoray::shoot {
 
-template <class Int, int M>
+template <class Int, int M, class Counter = NoCounting>
 class CrossSectionGrid {
 public:
     // About `cells_per_element` cells for each element in each direction's
@@ -72,6 +76,11 @@ public:
                 most = std::max<std::size_t>(most, b.offsets[c + 1] - b.offsets[c]);
         return most;
     }
+    // The side of a cell of direction `negative`'s cross-section on its
+    // axis j (0 .. M-2), in lattice units.
+    Int cell_side(unsigned negative, int j) const { return Int(1) << bundles_[negative].shift[j]; }
+    // What the shots cost so far (shot_counter.hpp).
+    const Counter& counter() const { return counter_; }
     std::size_t cell_count() const {
         std::size_t total = 0;
         for (const Bundle& b : bundles_) total += b.offsets.size() - 1;
@@ -106,6 +115,7 @@ private:
 
     std::vector<Item> items_;
     std::array<Bundle, (1u << M)> bundles_;
+    [[no_unique_address]] Counter counter_;
 
     static Int sigma(unsigned negative, int j) {
         return Int(1 - 2 * static_cast<int>((negative >> j) & 1u));
@@ -114,9 +124,9 @@ private:
     void build(Bundle& bundle, unsigned negative, std::int64_t cells_per_element);
 };
 
-template <class Int, int M>
-CrossSectionGrid<Int, M>::CrossSectionGrid(const LatticeScene& scene,
-                                           std::int64_t cells_per_element) {
+template <class Int, int M, class Counter>
+CrossSectionGrid<Int, M, Counter>::CrossSectionGrid(const LatticeScene& scene,
+                                                    std::int64_t cells_per_element) {
     items_.reserve(scene.elements.size());
     for (const LatticeElement& e : scene.elements)
         items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
@@ -156,9 +166,9 @@ CrossSectionGrid<Int, M>::CrossSectionGrid(const LatticeScene& scene,
         build(bundles_[negative], negative, cells_per_element);
 }
 
-template <class Int, int M>
-void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
-                                     std::int64_t cells_per_element) {
+template <class Int, int M, class Counter>
+void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
+                                              std::int64_t cells_per_element) {
     bundle.offsets.assign(2, 0);
     // The elements this direction's rays can meet: those acting on it.
     std::vector<std::uint32_t> acting;
@@ -284,8 +294,8 @@ void CrossSectionGrid<Int, M>::build(Bundle& bundle, unsigned negative,
                   [](const Member& x, const Member& y) { return x.key < y.key; });
 }
 
-template <class Int, int M>
-Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) const {
+template <class Int, int M, class Counter>
+Shot<Int> CrossSectionGrid<Int, M, Counter>::shoot(const Int (&p)[M], unsigned negative) const {
     Shot<Int> shot;
     const Bundle& bundle = bundles_[negative];
     if (bundle.empty) return shot;
@@ -298,6 +308,7 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
         if (a < bundle.origin[j] || bundle.limit[j] < a) return shot;
         c = c * bundle.cells[j] + to_index(Int(Int(a - bundle.origin[j]) >> bundle.shift[j]));
     }
+    counter_.cell();
     const Member* first = bundle.members.data() + bundle.offsets[c];
     const Member* last = bundle.members.data() + bundle.offsets[c + 1];
     const Int depth = s[0] * p[0];
@@ -319,9 +330,11 @@ Shot<Int> CrossSectionGrid<Int, M>::shoot(const Int (&p)[M], unsigned negative) 
     // The best hit's depth; until one is found, past every member's depth.
     Int best = bundle.far;
     for (; first != last && !(best < first->key); ++first) {
+        counter_.member();
         const int a = first->axis;
         const Int t = first->plane - sp[a];
         if (t <= 0 || best < Int(depth + t)) continue;
+        counter_.box_test();
         const Item& it = items_[first->item];
         if (it.holds(p, s, t)) {
             shot.record(t, a, it.absorber, it.index);

@@ -17,11 +17,15 @@
 // all elements (which the piece tables' construction walks): the filter is
 // applied once, when the lists are built, and a shot reads the lists of its
 // own direction with no test per element.
+//
+// `Counter` (shot_counter.hpp) is told each cell walked and each member
+// tested; the default counts nothing and costs nothing.
 #pragma once
 
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "shoot/element_box.hpp"
+#include "shoot/shot_counter.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -66,12 +70,14 @@ struct Shot {
     }
 };
 
-template <class Int, int M>
+template <class Int, int M, class Counter = NoCounting>
 class UniformGrid {
 public:
-    // About `cells_per_element` cells for each element: more cells mean fewer
-    // elements tested per cell but more cell walls crossed per shot.
-    explicit UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element = 2);
+    // About `cells_per_element` cells for every `per_elements` elements: more
+    // cells mean fewer elements tested per cell but more cell walls crossed
+    // per shot (docs/average-case.md derives the trade-off).
+    explicit UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element = 2,
+                         std::int64_t per_elements = 1);
 
     // `negative` bit i set: the ray moves towards -infinity on axis i.
     // Only elements that act on that direction are met.
@@ -84,6 +90,10 @@ public:
     }
 
     std::size_t cell_count() const { return static_cast<std::size_t>(cells_); }
+    // The side of a cell on axis j, in lattice units.
+    const Int& cell_side(int j) const { return h_[j]; }
+    // What the shots cost so far (shot_counter.hpp).
+    const Counter& counter() const { return counter_; }
 
     // Calls visit(index) for every element whose closed box contains p (an
     // element may be visited more than once).
@@ -133,6 +143,7 @@ private:
     std::vector<std::uint32_t> offsets_;
     std::vector<std::uint32_t> members_;
     std::int64_t list_base_[1u << M]{}; // direction -> its first slot
+    [[no_unique_address]] Counter counter_;
 
     Shot<Int> shoot_in(const Int (&p)[M], unsigned negative, std::int64_t base) const;
 
@@ -167,8 +178,9 @@ private:
     }
 };
 
-template <class Int, int M>
-UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element) {
+template <class Int, int M, class Counter>
+UniformGrid<Int, M, Counter>::UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element,
+                                          std::int64_t per_elements) {
     items_.reserve(scene.elements.size());
     for (const LatticeElement& e : scene.elements)
         items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
@@ -184,9 +196,11 @@ UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene, std::int64_t cells_p
             if (hi_[j] < it.hi[j]) hi_[j] = it.hi[j];
         }
     }
-    // k cells per axis with k^M >= cells_per_element * n, fewer on an axis
-    // whose extent has fewer lattice points.
-    std::int64_t k = 1, want = cells_per_element * static_cast<std::int64_t>(items_.size());
+    // k cells per axis with k^M >= cells_per_element * n / per_elements,
+    // fewer on an axis whose extent has fewer lattice points.
+    std::int64_t k = 1, want = (cells_per_element * static_cast<std::int64_t>(items_.size()) +
+                                per_elements - 1) /
+                               per_elements;
     while (true) {
         std::int64_t p = 1;
         for (int j = 0; j < M; ++j) p *= k;
@@ -223,9 +237,9 @@ UniformGrid<Int, M>::UniformGrid(const LatticeScene& scene, std::int64_t cells_p
                               [&](std::int64_t c) { members_[fill[list * total + c]++] = e; });
 }
 
-template <class Int, int M>
+template <class Int, int M, class Counter>
 template <class Visit>
-void UniformGrid<Int, M>::for_each_element_at(const Int (&p)[M], Visit&& visit) const {
+void UniformGrid<Int, M, Counter>::for_each_element_at(const Int (&p)[M], Visit&& visit) const {
     if (items_.empty()) return;
     std::int64_t i[M];
     for (int j = 0; j < M; ++j) {
@@ -243,17 +257,17 @@ void UniformGrid<Int, M>::for_each_element_at(const Int (&p)[M], Visit&& visit) 
     }
 }
 
-template <class Int, int M>
+template <class Int, int M, class Counter>
 template <class Visit>
-void UniformGrid<Int, M>::for_each_neighbour(std::uint32_t e, Visit&& visit) const {
+void UniformGrid<Int, M, Counter>::for_each_neighbour(std::uint32_t e, Visit&& visit) const {
     for_each_cell(items_[e], [&](std::int64_t c) {
         for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) visit(members_[k]);
     });
 }
 
-template <class Int, int M>
-Shot<Int> UniformGrid<Int, M>::shoot_in(const Int (&p)[M], unsigned negative,
-                                        std::int64_t base) const {
+template <class Int, int M, class Counter>
+Shot<Int> UniformGrid<Int, M, Counter>::shoot_in(const Int (&p)[M], unsigned negative,
+                                                 std::int64_t base) const {
     Shot<Int> shot;
     if (items_.empty()) return shot;
     // sigma_j = ±1: multiplying by it keeps the loops free of direction branches.
@@ -292,11 +306,14 @@ Shot<Int> UniformGrid<Int, M>::shoot_in(const Int (&p)[M], unsigned negative,
         Int t_exit = wall_t[0];
         for (int j = 1; j < M; ++j)
             if (wall_t[j] < t_exit) t_exit = wall_t[j];
+        counter_.cell();
         for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+            counter_.member();
             const Item& it = items_[members_[k]];
             const int a = it.axis;
             const Int t = sigma[a] * Int(it.lo[a] - p[a]);
             if (t <= 0 || t_exit < t || (!shot.escape && shot.t < t)) continue;
+            counter_.box_test();
             if (it.holds(p, sigma, t)) shot.record(t, a, it.absorber, it.index);
         }
         if (!shot.escape) return shot;
