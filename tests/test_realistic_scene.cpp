@@ -1,0 +1,92 @@
+// The realistic model derived from a mirror scene (docs/realistic-scenes.md,
+// "From mirror scenes"): where the dynamic program agrees with the exact
+// branch search, and the corridor where it over-approximates, since a chain
+// of locally feasible triples need not be one ray.
+#include "orthoray/parse.hpp"
+#include "orthoray/realistic.hpp"
+#include "orthoray/solve.hpp"
+#include "support/run_cli.hpp"
+#include "support/test_files.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace orthoray;
+
+namespace {
+
+Integer exact_best(const Scene& scene, long eps) {
+    SolveOptions options;
+    options.min_intensity = Integer(eps);
+    const Answer a = solve(scene, options);
+    const TargetAnswer& t = a.targets.front();
+    return t.status == TargetAnswer::Status::lit ? *t.intensity : Integer(-1);
+}
+
+std::string path_of(const RealisticModel& model, const RealisticAnswer& answer) {
+    std::string path;
+    for (const std::size_t object : answer.path)
+        path += (path.empty() ? "" : " ") + model.objects[object];
+    return path;
+}
+
+} // namespace
+
+TEST_CASE("the model of a scene whose legs are each one ray agrees with the branch search",
+          "[realistic][intensity]") {
+    // Through the dim splitter e1 (10), or turned by it and the mirrors e2
+    // and e3 (100): each leg is met by one state only.
+    const Scene s = read_scene("dim 2\nsplitter x 2 y 1 3 transmittance 1/10\n"
+                               "mirror x 0 y 3 5\nmirror y 6 x 1 3\n"
+                               "ray 0 0 1 1 intensity 100\ntarget 4 4\n");
+    const RealisticModel model = realistic_model_of_scene(s, 0, Integer(0));
+    CHECK(model.objects.size() == 5);
+    const RealisticAnswer dp = solve_realistic(model);
+    CHECK(dp.yes);
+    CHECK(dp.best == 100);
+    CHECK(dp.best == exact_best(s, 0));
+    CHECK(path_of(model, dp) == "S e1 e2 e3 R");
+    // Above eps 100 neither lights it.
+    const RealisticAnswer above = solve_realistic(realistic_model_of_scene(s, 0, Integer(100)));
+    CHECK(!above.yes);
+    CHECK(exact_best(s, 100) == -1);
+}
+
+TEST_CASE("the model of a mirror corridor over-approximates: triples forget the bounces",
+          "[realistic][intensity]") {
+    // The ray zigzags between walls e1 (x = 0) and e2 (x = 1) of reflectance
+    // 2/3 and passes the target after 4 reflections: 1000 -> 666 -> 444 ->
+    // 296 -> 197. The model has the triple (e2, e1, R), and the pair
+    // (e2, e1) is reached with 666 after one reflection, so the program
+    // passes 444 to R: a chain of feasible triples that no ray follows.
+    const Scene s = read_scene("dim 2\nmirror x 0 y 0 100 reflectance 2/3\n"
+                               "mirror x 1 y 0 100 reflectance 2/3\n"
+                               "ray 1/2 0 1 1 intensity 1000\ntarget 1/2 4\n");
+    CHECK(exact_best(s, 0) == 197);
+    const RealisticModel model = realistic_model_of_scene(s, 0, Integer(300));
+    const RealisticAnswer dp = solve_realistic(model);
+    CHECK(dp.best == 444);
+    CHECK(path_of(model, dp) == "S e2 e1 R");
+    // With eps 300 the program says yes where no branch is bright enough.
+    CHECK(dp.yes);
+    CHECK(exact_best(s, 300) == -1);
+}
+
+TEST_CASE("realistic --from-scene runs the program on a scene", "[realistic][cli]") {
+    test::TempDir dir;
+    const std::string file =
+        dir.write("corridor.scene", "dim 2\nmirror x 0 y 0 100 reflectance 2/3\n"
+                                    "mirror x 1 y 0 100 reflectance 2/3\n"
+                                    "ray 1/2 0 1 1 intensity 1000\ntarget 1/2 4\n");
+    const test::CliResult r =
+        test::run_cli("realistic --from-scene --min-intensity 300 " + test::quote(file));
+    CHECK(r.status == 0);
+    CHECK(r.out.find("best         444 (eps 300)\n") != std::string::npos);
+    CHECK(r.out.find("path         S e2 e1 R\n") != std::string::npos);
+    const test::CliResult exact = test::run_cli("solve --min-intensity 300 " + test::quote(file));
+    CHECK(exact.status == 1);
+    // One ray with an intensity, and no certificate.
+    const std::string two = dir.write("two.scene", "dim 2\nray 0 0 1 0 intensity 5\n"
+                                                   "ray 0 1 1 0 intensity 5\ntarget 1 0\n");
+    CHECK(test::run_cli("realistic --from-scene " + test::quote(two)).status == 2);
+    CHECK(test::run_cli("realistic --from-scene --certificate x " + test::quote(file)).status == 2);
+}
