@@ -5,6 +5,9 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
 #include "orthoray/solve.hpp"
+#include "support/case_count.hpp"
+#include "support/portable_random.hpp"
+#include "support/random_optics.hpp"
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
 
@@ -69,6 +72,39 @@ TEST_CASE("the model of a mirror corridor over-approximates: triples forget the 
     // With eps 300 the program says yes where no branch is bright enough.
     CHECK(dp.yes);
     CHECK(exact_best(s, 300) == -1);
+}
+
+TEST_CASE("the derived model never delivers less than the scene", "[realistic][intensity]") {
+    // Every branch is a path of the model with the same floor chain, so the
+    // program's best is at least the branch search's on random scenes.
+    std::mt19937_64 rng(1617);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 50;
+    shape.max_rays = 1;
+    shape.max_targets = 1;
+    shape.scene.max_elements = 8;
+    const Rational factors[] = {Rational(1), Rational(1, 2), Rational(2, 3), Rational(0)};
+    const int cases = test::case_count(600);
+    int lit = 0, over = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 3 == 0 ? 3 : 2;
+        Scene s = test::random_optics_scene(rng, shape);
+        for (Element& e : s.elements) {
+            if (e.kind == ElementKind::absorber) continue;
+            e.reflectance = factors[test::pick_index(rng, 0, 3)];
+            if (e.kind == ElementKind::splitter)
+                e.transmittance = factors[test::pick_index(rng, 0, 3)];
+        }
+        s.ray().intensity = Integer(test::pick(rng, 1, 300));
+        INFO("case " << i << "\n" << write_scene(s));
+        const Integer exact = exact_best(s, 0);
+        const RealisticAnswer dp = solve_realistic(realistic_model_of_scene(s, 0, Integer(0)));
+        CHECK(dp.best >= exact);
+        if (exact > 0) ++lit;
+        if (dp.best > exact && exact > 0) ++over;
+    }
+    CHECK(lit > cases / 10);
+    CHECK(over > 0);
 }
 
 TEST_CASE("realistic --from-scene runs the program on a scene", "[realistic][cli]") {
