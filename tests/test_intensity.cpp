@@ -211,6 +211,19 @@ TEST_CASE("the intensity search agrees with a brute-force enumeration of branche
                 }
             }
         }
+        // Without --min-intensity the attributes change nothing.
+        if (i < cases / 6) {
+            Scene plain = s;
+            for (Element& e : plain.elements) e.reflectance = e.transmittance = std::nullopt;
+            for (Ray& r : plain.rays) r.intensity.reset();
+            const Answer with = solve(s), without = solve(plain);
+            CHECK(with.reason == without.reason);
+            CHECK(with.reflections == without.reflections);
+            for (std::size_t t = 0; t < with.targets.size(); ++t) {
+                CHECK(with.targets[t].status == without.targets[t].status);
+                CHECK(with.targets[t].reflections == without.targets[t].reflections);
+            }
+        }
         for (std::size_t t = 0; t < s.targets.size(); ++t) {
             const bool on = a.targets[t].status == Status::lit;
             (on ? lit : unlit) += 1;
