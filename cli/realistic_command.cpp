@@ -16,16 +16,20 @@ namespace orthoray::cli {
 namespace {
 
 struct RealisticArgs {
-    std::string file, certificate, min_intensity = "0";
+    std::string file, certificate, min_intensity = "0", write_model;
     bool json = false, from_scene = false;
     std::size_t target = 1;
 };
 
 // The model to decide: the file itself, or the one derived from a scene.
 RealisticModel model_of(const RealisticArgs& args) {
-    if (!args.from_scene) return read_realistic(read_file(args.file), args.file);
-    if (!args.certificate.empty())
-        throw UsageError("found --certificate with --from-scene, expected one of them (a "
+    if (!args.from_scene) {
+        if (!args.write_model.empty())
+            throw UsageError("found --write-model without --from-scene, expected --from-scene");
+        return read_realistic(read_file(args.file), args.file);
+    }
+    if (!args.certificate.empty() && args.write_model.empty())
+        throw UsageError("found --certificate with --from-scene, expected --write-model too (a "
                          "certificate is checked against a model file)");
     if (args.min_intensity.empty() ||
         args.min_intensity.find_first_not_of("0123456789") != std::string::npos)
@@ -36,7 +40,14 @@ RealisticModel model_of(const RealisticArgs& args) {
         throw UsageError("found --target " + std::to_string(args.target) +
                          ", expected a target of the scene (1 to " +
                          std::to_string(scene.targets.size()) + ")");
-    return realistic_model_of_scene(scene, args.target - 1, Integer(args.min_intensity, 10));
+    RealisticModel model =
+        realistic_model_of_scene(scene, args.target - 1, Integer(args.min_intensity, 10));
+    if (!args.write_model.empty()) {
+        OutputFile out(args.write_model, {args.file}, "the model");
+        out.stream() << write_realistic(model);
+        out.commit();
+    }
+    return model;
 }
 
 int run(const RealisticArgs& args) {
@@ -107,6 +118,9 @@ Command add_realistic(CLI::App& app) {
                     "with --from-scene: eps, a natural number (default 0)");
     cmd->add_option("--target", args->target,
                     "with --from-scene: which target is the receiver (default 1)");
+    cmd->add_option("--write-model", args->write_model,
+                    "with --from-scene: write the derived model to this file (then --certificate "
+                    "can be checked against it with 'orthoray verify')");
     cmd->add_option("--certificate", args->certificate,
                     "write the path and the closed pair bounds to this file");
     return [args] { return run(*args); };

@@ -72,6 +72,10 @@ TEST_CASE("the model of a mirror corridor over-approximates: triples forget the 
     // With eps 300 the program says yes where no branch is bright enough.
     CHECK(dp.yes);
     CHECK(exact_best(s, 300) == -1);
+    // Written out and read back, the model gives the same answer.
+    const RealisticModel again = read_realistic(write_realistic(model));
+    CHECK(write_realistic(again) == write_realistic(model));
+    CHECK(solve_realistic(again).best == 444);
 }
 
 TEST_CASE("the derived model never delivers less than the scene", "[realistic][intensity]") {
@@ -120,7 +124,18 @@ TEST_CASE("realistic --from-scene runs the program on a scene", "[realistic][cli
     CHECK(r.out.find("path         S e2 e1 R\n") != std::string::npos);
     const test::CliResult exact = test::run_cli("solve --min-intensity 300 " + test::quote(file));
     CHECK(exact.status == 1);
-    // One ray with an intensity, and no certificate.
+    // The derived model written out, and a certificate verify accepts.
+    const std::string model = dir.path("corridor.realistic"), cert = dir.path("c.txt");
+    const test::CliResult written = test::run_cli(
+        "realistic --from-scene --min-intensity 300 --write-model " + test::quote(model) +
+        " --certificate " + test::quote(cert) + " " + test::quote(file));
+    CHECK(written.status == 0);
+    CHECK(test::slurp(model).starts_with("realistic 1\nobject S R e1 e2\nsource S 1000\n"));
+    const test::CliResult verified =
+        test::run_cli("verify " + test::quote(model) + " " + test::quote(cert));
+    INFO(verified.out << verified.err);
+    CHECK(verified.status == 0);
+    // One ray with an intensity, and a certificate only beside a model.
     const std::string two = dir.write("two.scene", "dim 2\nray 0 0 1 0 intensity 5\n"
                                                    "ray 0 1 1 0 intensity 5\ntarget 1 0\n");
     CHECK(test::run_cli("realistic --from-scene " + test::quote(two)).status == 2);

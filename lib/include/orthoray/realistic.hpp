@@ -83,6 +83,9 @@ struct RealisticAnswer {
 RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
                                         std::size_t max_states = 1'000'000);
 
+// The model in the text format read_realistic reads.
+std::string write_realistic(const RealisticModel& model);
+
 // The dynamic program, run as Boost.Graph's dijkstra_shortest_paths over the
 // graph of object pairs with "more intensity" as the order and each
 // triple's transfer as the edge's combine.
