@@ -16,12 +16,42 @@ namespace orthoray::cli {
 namespace {
 
 struct RealisticArgs {
-    std::string file, certificate;
-    bool json = false;
+    std::string file, certificate, min_intensity = "0", write_model;
+    bool json = false, from_scene = false;
+    std::size_t target = 1;
 };
 
+// The model to decide: the file itself, or the one derived from a scene.
+RealisticModel model_of(const RealisticArgs& args) {
+    if (!args.from_scene) {
+        if (!args.write_model.empty())
+            throw UsageError("found --write-model without --from-scene, expected --from-scene");
+        return read_realistic(read_file(args.file), args.file);
+    }
+    if (!args.certificate.empty() && args.write_model.empty())
+        throw UsageError("found --certificate with --from-scene, expected --write-model too (a "
+                         "certificate is checked against a model file)");
+    if (args.min_intensity.empty() ||
+        args.min_intensity.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError("found --min-intensity " + args.min_intensity +
+                         ", expected a natural number (0, 1, 2, ...)");
+    const Scene scene = load_scene(args.file);
+    if (args.target == 0 || args.target > scene.targets.size())
+        throw UsageError("found --target " + std::to_string(args.target) +
+                         ", expected a target of the scene (1 to " +
+                         std::to_string(scene.targets.size()) + ")");
+    RealisticModel model =
+        realistic_model_of_scene(scene, args.target - 1, Integer(args.min_intensity, 10));
+    if (!args.write_model.empty()) {
+        OutputFile out(args.write_model, {args.file}, "the model");
+        out.stream() << write_realistic(model);
+        out.commit();
+    }
+    return model;
+}
+
 int run(const RealisticArgs& args) {
-    const RealisticModel model = read_realistic(read_file(args.file), args.file);
+    const RealisticModel model = model_of(args);
     const auto begin = std::chrono::steady_clock::now();
     const RealisticAnswer answer = solve_realistic(model);
     const double seconds =
@@ -74,10 +104,23 @@ Command add_realistic(CLI::App& app) {
         "  orthoray realistic instances/realistic/greedy-fails.realistic\n\n"
         "Exit status: 0 yes, 1 no, 2 bad input or usage, 5 the certificate could not be\n"
         "written. 'orthoray verify MODEL.realistic CERT' checks a certificate.");
-    cmd->add_option("FILE", args->file, "the model (docs/realistic-scenes.md)")->required();
+    cmd->add_option("FILE", args->file,
+                    "the model (docs/realistic-scenes.md), or a scene with --from-scene")
+        ->required();
     cmd->add_flag("--json", args->json,
                   "one JSON object: answer, best (null when nothing arrives), eps, path, "
                   "arrivals, pairs, seconds");
+    cmd->add_flag("--from-scene", args->from_scene,
+                  "FILE is a mirror scene with one ray carrying an intensity: decide the model "
+                  "derived from its lattice states (docs/realistic-scenes.md, \"From mirror "
+                  "scenes\"); objects S (the ray), R (the target) and e1, e2, ... (the elements)");
+    cmd->add_option("--min-intensity", args->min_intensity,
+                    "with --from-scene: eps, a natural number (default 0)");
+    cmd->add_option("--target", args->target,
+                    "with --from-scene: which target is the receiver (default 1)");
+    cmd->add_option("--write-model", args->write_model,
+                    "with --from-scene: write the derived model to this file (then --certificate "
+                    "can be checked against it with 'orthoray verify')");
     cmd->add_option("--certificate", args->certificate,
                     "write the path and the closed pair bounds to this file");
     return [args] { return run(*args); };

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace orthoray {
@@ -29,6 +30,10 @@ struct TargetAnswer {
     Integer reflections;
     // lit: the least-numbered ray (from 1, in file order) achieving it.
     std::size_t ray = 0;
+    // The intensity question (docs/intensity.md), lit: the greatest
+    // intensity of a branch passing the target; `reflections` and `ray` are
+    // then those of one branch achieving it.
+    std::optional<Integer> intensity;
 };
 
 // What actually ran, as opposed to what SolveOptions asks for (where

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "orthoray/number.hpp"
+#include "orthoray/scene.hpp"
 
 #include <cstddef>
 #include <istream>
@@ -70,6 +71,20 @@ struct RealisticAnswer {
     };
     std::vector<PairBound> bounds;
 };
+
+// The model of a mirror scene (docs/realistic-scenes.md, "From mirror
+// scenes"): objects "S" (the ray's start, the source, emitting the ray's
+// intensity), "R" (target number `target` + 1, the receiver) and "e1", "e2",
+// ... (the elements in file order); first legs and triples are the legs of
+// every reachable state of the ray, each triple's transfer the exact factor
+// of the event at its middle object. The scene must have one ray, with an
+// intensity; UnsupportedScene otherwise, or when the ray reaches more than
+// `max_states` states.
+RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
+                                        std::size_t max_states = 1'000'000);
+
+// The model in the text format read_realistic reads.
+std::string write_realistic(const RealisticModel& model);
 
 // The dynamic program, run as Boost.Graph's dijkstra_shortest_paths over the
 // graph of object pairs with "more intensity" as the order and each

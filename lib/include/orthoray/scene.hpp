@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ struct Element {
     Diagonal diagonal = Diagonal::none;
     Vector lo, hi;
     int line = 0; // where it was declared in its file (0 when built in code)
+    // Optional attenuation (docs/intensity.md), rationals in [0, 1]; absent
+    // means 1 and is written back absent. A mirror or a splitter may carry a
+    // reflectance, only a splitter a transmittance, an absorber neither.
+    std::optional<Rational> reflectance, transmittance;
 
     bool is_diagonal() const { return diagonal != Diagonal::none; }
     // Axis-aligned elements only.
@@ -77,6 +82,9 @@ struct Element {
 struct Ray {
     Vector start, direction;
     int line = 0; // where it was declared in its file (0 when built in code)
+    // Optional starting intensity, a natural number (docs/intensity.md);
+    // only `solve --min-intensity` reads it.
+    std::optional<Integer> intensity;
 };
 
 // A scene has at least one ray and one target; rays and targets are

@@ -141,6 +141,10 @@ struct SolveOptions {
     // (then every reachable branch state is explored, even when all targets
     // are lit early). A CertificateWriter attaches itself.
     IlluminationObserver* illumination_observer = nullptr;
+    // Set: the intensity question (docs/intensity.md) instead: is each
+    // target reached by a branch with intensity greater than this? Every
+    // ray must carry an intensity; no certificate is written.
+    std::optional<Integer> min_intensity;
 };
 
 // Running out of memory while solving is a limit too (Reason::limit,

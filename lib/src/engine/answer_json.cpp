@@ -21,7 +21,9 @@ void write_targets(std::ostream& out, const Answer& a) {
         switch (target.status) {
         case TargetAnswer::Status::lit:
             out << "\"yes\",\"reflections\":" << target.reflections.get_str()
-                << ",\"ray\":" << target.ray << "}";
+                << ",\"ray\":" << target.ray;
+            if (target.intensity) out << ",\"intensity\":" << target.intensity->get_str();
+            out << '}';
             break;
         case TargetAnswer::Status::unlit:
             out << "\"no\"}";

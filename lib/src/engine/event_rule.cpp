@@ -77,4 +77,58 @@ EventOutcome event_outcome(int dim, const std::vector<const Element*>& acting, c
     return outcome;
 }
 
+namespace {
+
+const Rational& reflectance(const Element& e) {
+    static const Rational one(1);
+    return e.reflectance ? *e.reflectance : one;
+}
+
+const Rational& transmittance(const Element& e) {
+    static const Rational one(1);
+    return e.transmittance ? *e.transmittance : one;
+}
+
+// The factor where a diagonal acts (the cases of diagonal_outcome).
+Rational diagonal_factor(const std::vector<const Element*>& acting, const Vector& v,
+                         const Vector& out) {
+    bool mixed = false, mirror = false;
+    const Element& first = *acting.front();
+    for (const Element* e : acting) {
+        mixed =
+            mixed || e->diagonal != first.diagonal || (!e->is_diagonal() && e->axis != first.axis);
+        mirror = mirror || e->kind == ElementKind::mirror;
+    }
+    Rational factor(1);
+    for (const Element* e : acting) {
+        if (mixed || (mirror && e->kind == ElementKind::mirror))
+            factor *= reflectance(*e);
+        else if (!mirror)
+            factor *= out == v ? transmittance(*e) : reflectance(*e);
+    }
+    return factor;
+}
+
+} // namespace
+
+Rational outgoing_factor(const std::vector<const Element*>& acting, const Vector& v,
+                         const Vector& out) {
+    bool plain = true; // every attribute absent: the factor is 1, no arithmetic
+    for (const Element* e : acting) plain = plain && !e->reflectance && !e->transmittance;
+    if (plain) return Rational(1);
+    for (const Element* e : acting)
+        if (e->is_diagonal()) return diagonal_factor(acting, v, out);
+    unsigned mirrored = 0;
+    for (const Element* e : acting)
+        if (e->kind == ElementKind::mirror) mirrored |= 1u << e->axis;
+    Rational factor(1);
+    for (const Element* e : acting) {
+        if (e->kind == ElementKind::mirror)
+            factor *= reflectance(*e);
+        else if (e->kind == ElementKind::splitter && !(mirrored & (1u << e->axis)))
+            factor *= out[e->axis] != v[e->axis] ? reflectance(*e) : transmittance(*e);
+    }
+    return factor;
+}
+
 } // namespace orthoray::engine

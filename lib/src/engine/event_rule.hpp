@@ -37,4 +37,18 @@ struct EventOutcome {
 // each and that acts_on holds). `dim` is the scene's dimension.
 EventOutcome event_outcome(int dim, const std::vector<const Element*>& acting, const Vector& v);
 
+// The fraction of a ray's intensity that leaves an event along `out`, one of
+// event_outcome's directions for v at a point where `acting` act
+// (docs/intensity.md): the product, over the elements that decide `out`, of
+// their reflectance where they turn it and a splitter's transmittance where
+// it lets it through. Axis by axis: a mirror of the axis gives its
+// reflectance (a splitter of the same axis is overruled and gives nothing);
+// else each splitter of the axis gives its reflectance if `out` flips that
+// axis, its transmittance if not. With a diagonal: the mirrors' reflectances
+// if one slope has a mirror, else each splitter's reflectance or
+// transmittance; where orientations mix (the ray goes back) every acting
+// element's reflectance. Absent attributes are 1.
+Rational outgoing_factor(const std::vector<const Element*>& acting, const Vector& v,
+                         const Vector& out);
+
 } // namespace orthoray::engine

@@ -104,7 +104,7 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
             for (std::size_t t : passes[u]) {
                 TargetAnswer& target = answer.targets[t];
                 if (target.status == TargetAnswer::Status::lit && target.reflections <= d) continue;
-                target = {TargetAnswer::Status::lit, d, r + 1};
+                target = {TargetAnswer::Status::lit, d, r + 1, std::nullopt};
             }
         }
     }

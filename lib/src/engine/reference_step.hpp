@@ -21,6 +21,9 @@ struct ReferenceEvent {
     // Every direction leaving `point` (docs/optics.md); empty on escape or
     // absorption.
     std::vector<Outgoing> outgoing;
+    // The elements acting at `point` (empty on escape), for the factors of
+    // the outgoing directions (outgoing_factor, docs/intensity.md).
+    std::vector<const Element*> acting;
 };
 
 ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v);

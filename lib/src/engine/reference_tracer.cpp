@@ -61,6 +61,7 @@ ReferenceEvent event_at(int dim, Rational t, Vector point,
     event.absorbed = outcome.absorbed;
     event.outgoing = std::move(outcome.outgoing);
     event.direction = event.absorbed ? v : event.outgoing.front().direction;
+    event.acting = acting;
     return event;
 }
 

@@ -3,6 +3,7 @@
 
 #include "engine/cycle_detector.hpp"
 #include "engine/illumination.hpp"
+#include "engine/intensity_search.hpp"
 #include "engine/lattice_engine.hpp"
 #include "engine/octagonal_engine.hpp"
 #include "engine/reference_illumination.hpp"
@@ -104,6 +105,14 @@ const std::map<std::string, Engine>& engine_names() {
 }
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
+    // The intensity question has one search, stepping on the lattices or,
+    // for --engine reference, with the rational scan (docs/intensity.md).
+    if (options.min_intensity) {
+        if (options.engine == Engine::graph || options.engine == Engine::induction)
+            throw std::invalid_argument("the intensity question is decided by its branch search: "
+                                        "the graph and induction engines do not take it");
+        return engine::solve_intensity(scene, options);
+    }
     // Diagonals (docs/octagonal.md): the illumination engines follow them,
     // and so does every engine for a single trajectory; induction and the
     // default engine have their own entries for them.

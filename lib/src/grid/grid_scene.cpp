@@ -96,8 +96,8 @@ Scene grid_scene(const GridMaze& maze) {
     // A beam starts at the centre of the cell just outside its entry edge,
     // so a block at the entry absorbs it on its outer side.
     for (const GridBeam& beam : maze.beams)
-        scene.rays.push_back(
-            {beyond(maze, beam.side, beam.index, half), inward(beam.side), beam.line});
+        scene.rays.push_back({beyond(maze, beam.side, beam.index, half), inward(beam.side),
+                              beam.line, std::nullopt});
     // An exit target lies one cell outside the grid: only a beam leaving
     // through that edge passes it (a beam entering there starts nearer).
     for (const GridTarget& target : maze.targets)

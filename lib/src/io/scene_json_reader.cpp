@@ -78,7 +78,7 @@ private:
 
     Ray read_ray(const JsonValue& ray) const {
         expect_type(ray, JsonValue::Type::object, ray_form);
-        check_keys(ray, {"start", "direction"});
+        check_keys(ray, {"start", "direction", "intensity"});
         Ray r;
         r.line = ray.line;
         r.start = point(member(ray, "start", "the start point"), "the start point");
@@ -87,7 +87,41 @@ private:
         bool zero = true;
         for (int j = 0; j < scene_.dim; ++j) zero = zero && r.direction[j] == 0;
         if (zero) fail(direction, "found the direction 0, expected a nonzero direction");
+        if (const JsonValue* intensity = ray.find("intensity")) r.intensity = natural(*intensity);
         return r;
+    }
+
+    // A ray's intensity (docs/intensity.md): a natural number, as a JSON
+    // number or a string of decimal digits.
+    Integer natural(const JsonValue& value) const {
+        const std::string_view text = value.text;
+        if ((value.type != JsonValue::Type::number && value.type != JsonValue::Type::string) ||
+            text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos)
+            fail(value, "found " + io::describe(value) +
+                            " as the intensity, expected a natural number (0, 1, 2, ...)");
+        ReadStopCheck::poll();
+        return Integer(std::string(text), 10);
+    }
+
+    // An element's optional "reflectance" and "transmittance"
+    // (docs/intensity.md): rationals in [0, 1]; an absorber takes neither, a
+    // mirror no transmittance.
+    void read_attenuation(const JsonValue& value, Element& e) const {
+        for (std::size_t i = 0; i < value.keys.size(); ++i) {
+            const bool reflectance = value.keys[i] == "reflectance";
+            if (!reflectance && value.keys[i] != "transmittance") continue;
+            if (e.kind == ElementKind::absorber || (!reflectance && e.kind == ElementKind::mirror))
+                fail(value.key_lines[i], value.key_columns[i],
+                     "found the key " + io::json_quoted(value.keys[i]) + " on " +
+                         (e.kind == ElementKind::absorber ? "an absorber" : "a mirror") +
+                         ", expected it " +
+                         (reflectance ? "on a mirror or splitter" : "on a splitter only"));
+            const JsonValue& v = *value.find(value.keys[i]);
+            const std::string what = "the " + value.keys[i] + " (a rational in [0, 1])";
+            Rational r = number(v, what);
+            if (r < 0 || r > 1) fail(v, "found " + io::describe(v) + ", expected " + what);
+            (reflectance ? e.reflectance : e.transmittance) = std::move(r);
+        }
     }
 
     [[noreturn]] void fail(int line, int column, const std::string& message) const {
@@ -195,9 +229,10 @@ private:
                     "an element {\"kind\": ..., \"axis\": ..., \"offset\": ..., \"extent\": ...}");
         const bool diagonal = value.find("diagonal") != nullptr;
         if (diagonal)
-            check_keys(value, {"kind", "diagonal", "from", "to"});
+            check_keys(value, {"kind", "diagonal", "from", "to", "reflectance", "transmittance"});
         else
-            check_keys(value, {"kind", "axis", "side", "offset", "extent"});
+            check_keys(value, {"kind", "axis", "side", "offset", "extent", "reflectance",
+                               "transmittance"});
         Element e;
         e.line = value.line;
         const char* kinds = "\"mirror\", \"absorber\" or \"splitter\"";
@@ -210,6 +245,7 @@ private:
             e.kind = ElementKind::splitter;
         else
             fail(kind, "found " + io::describe(kind) + ", expected " + kinds);
+        read_attenuation(value, e);
         if (diagonal) return read_diagonal(value, e);
         // No "side": two-sided. "+" or "-": one-sided (docs/optics.md).
         if (const JsonValue* side = value.find("side")) {

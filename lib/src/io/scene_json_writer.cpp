@@ -14,6 +14,12 @@ void write_point(std::ostream& out, const Vector& x, int dim) {
     out << ']';
 }
 
+// The optional attenuation keys (docs/intensity.md), absent when unset.
+void write_attenuation(std::ostream& out, const Element& e) {
+    if (e.reflectance) out << ", \"reflectance\": \"" << to_string(*e.reflectance) << '"';
+    if (e.transmittance) out << ", \"transmittance\": \"" << to_string(*e.transmittance) << '"';
+}
+
 } // namespace
 
 std::string write_scene_json(const Scene& scene) {
@@ -28,6 +34,7 @@ std::string write_scene_json(const Scene& scene) {
             write_point(out, e.from(), 2);
             out << ", \"to\": ";
             write_point(out, e.to(), 2);
+            write_attenuation(out, e);
             out << '}';
             continue;
         }
@@ -42,7 +49,9 @@ std::string write_scene_json(const Scene& scene) {
                 << "\", \"" << to_string(e.hi[j]) << "\"]";
             first = false;
         }
-        out << "}}";
+        out << '}';
+        write_attenuation(out, e);
+        out << '}';
     }
     out << (scene.elements.empty() ? "],\n" : "\n  ],\n");
     // One ray or target in the single form, several as an array.
@@ -51,6 +60,7 @@ std::string write_scene_json(const Scene& scene) {
         write_point(out, ray.start, scene.dim);
         out << ", \"direction\": ";
         write_point(out, ray.direction, scene.dim);
+        if (ray.intensity) out << ", \"intensity\": \"" << ray.intensity->get_str() << '"';
         out << '}';
     };
     if (scene.rays.size() == 1) {

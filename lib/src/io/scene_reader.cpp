@@ -209,7 +209,7 @@ private:
                      "found " + quoted(hi_token.text) + " as the upper end of the " + name +
                          " extent, expected a number greater than " + to_string(e.lo[j]));
         }
-        expect_end_of_line();
+        read_attenuation(e);
         scene_.elements.push_back(std::move(e));
     }
 
@@ -246,10 +246,68 @@ private:
                                       " as the second endpoint's y, expected " + to_string(wanted) +
                                       " (a segment of slope " +
                                       (e.diagonal == Diagonal::rising ? "+1" : "-1") + ")");
-        expect_end_of_line();
+        read_attenuation(e);
         e.lo = {x0, std::min(y0, y1), Rational(0)};
         e.hi = {x1, std::max(y0, y1), Rational(0)};
         scene_.elements.push_back(std::move(e));
+    }
+
+    // The optional trailing attributes of an element (docs/intensity.md):
+    // `reflectance R` on a mirror or splitter, `transmittance T` on a
+    // splitter, each at most once, in either order, R and T in [0, 1].
+    void read_attenuation(Element& e) {
+        int reflectance_column = 0, transmittance_column = 0;
+        while (next_ < tokens_.size()) {
+            const Token& name = tokens_[next_];
+            const bool reflectance = name.text == "reflectance";
+            // Any other word is what it always was: something after the end.
+            if (!reflectance && name.text != "transmittance") expect_end_of_line();
+            if (e.kind == ElementKind::absorber || (!reflectance && e.kind == ElementKind::mirror))
+                fail(name.column,
+                     "found " + quoted(name.text) + " on " +
+                         (e.kind == ElementKind::absorber ? "an absorber" : "a mirror") +
+                         ", expected end of line (" +
+                         (reflectance ? "an absorber reflects nothing"
+                                      : "only a splitter transmits") +
+                         ")");
+            int& seen = reflectance ? reflectance_column : transmittance_column;
+            if (seen != 0)
+                fail(name.column, "found a second " + quoted(name.text) +
+                                      " (the first is at column " + std::to_string(seen) +
+                                      "), expected each attribute once");
+            seen = name.column;
+            ++next_;
+            const std::string what = "the " + std::string(name.text);
+            const Token& value_token = tokens_[next_ < tokens_.size() ? next_ : 0];
+            Rational value = take_number(what + " (a rational in [0, 1])");
+            if (value < 0 || value > 1)
+                fail(value_token.column, "found " + quoted(value_token.text) + " as " + what +
+                                             ", expected a rational in [0, 1]");
+            value.canonicalize();
+            (reflectance ? e.reflectance : e.transmittance) = std::move(value);
+        }
+    }
+
+    // The optional `intensity N` after a ray's direction: a natural number
+    // in decimal digits (docs/intensity.md).
+    void read_intensity(Ray& ray) {
+        if (next_ == tokens_.size()) return;
+        const Token& name = tokens_[next_++];
+        if (name.text != "intensity") {
+            --next_;
+            expect_end_of_line();
+        }
+        const Token& value = take("the intensity (a natural number: 0, 1, 2, ...)");
+        if (value.text.find_first_not_of("0123456789") != std::string_view::npos)
+            fail(value.column, "found " + quoted(value.text) +
+                                   " as the intensity, expected a natural number (0, 1, 2, ...)");
+        ReadStopCheck::poll();
+        ray.intensity = Integer(std::string(value.text), 10);
+        if (next_ < tokens_.size() && tokens_[next_].text == "intensity")
+            fail(tokens_[next_].column, "found a second 'intensity' (the first is at column " +
+                                            std::to_string(name.column) +
+                                            "), expected each attribute once");
+        expect_end_of_line();
     }
 
     // Rays and targets may each appear any number of times; they are
@@ -266,7 +324,7 @@ private:
             zero = zero && ray.direction[j] == 0;
         }
         if (zero) fail(direction_column, "found the direction 0, expected a nonzero direction");
-        expect_end_of_line();
+        read_intensity(ray);
         scene_.rays.push_back(std::move(ray));
     }
 

@@ -118,6 +118,17 @@ void Scene::add(ElementKind kind, int axis, const Rational& offset,
     elements.push_back(e);
 }
 
+namespace {
+
+// The optional trailing attributes of an element (docs/intensity.md); none
+// when absent, so scenes without them are written as before.
+void write_attenuation(std::ostream& out, const Element& e) {
+    if (e.reflectance) out << " reflectance " << to_string(*e.reflectance);
+    if (e.transmittance) out << " transmittance " << to_string(*e.transmittance);
+}
+
+} // namespace
+
 std::string write_scene(const Scene& scene) {
     std::ostringstream out;
     out << "dim " << scene.dim << '\n';
@@ -125,8 +136,9 @@ std::string write_scene(const Scene& scene) {
         if (e.is_diagonal()) {
             const Vector a = e.from(), b = e.to();
             out << to_string(e.kind) << ' ' << diagonal_sign(e.diagonal) << ' ' << to_string(a[0])
-                << ' ' << to_string(a[1]) << ' ' << to_string(b[0]) << ' ' << to_string(b[1])
-                << '\n';
+                << ' ' << to_string(a[1]) << ' ' << to_string(b[0]) << ' ' << to_string(b[1]);
+            write_attenuation(out, e);
+            out << '\n';
             continue;
         }
         out << to_string(e.kind) << ' ' << axis_name(e.axis) << side_sign(e.side) << ' '
@@ -135,12 +147,14 @@ std::string write_scene(const Scene& scene) {
             if (j != e.axis)
                 out << ' ' << axis_name(j) << ' ' << to_string(e.lo[j]) << ' '
                     << to_string(e.hi[j]);
+        write_attenuation(out, e);
         out << '\n';
     }
     for (const Ray& ray : scene.rays) {
         out << "ray";
         for (int j = 0; j < scene.dim; ++j) out << ' ' << to_string(ray.start[j]);
         for (int j = 0; j < scene.dim; ++j) out << ' ' << to_string(ray.direction[j]);
+        if (ray.intensity) out << " intensity " << ray.intensity->get_str();
         out << '\n';
     }
     for (const Vector& target : scene.targets) {

@@ -1,0 +1,312 @@
+// The most intense branch first (docs/intensity.md).
+//
+// A label is a pair (intensity, ray): one label comes before another when
+// its intensity is greater, or equal with a smaller ray. A ray's start
+// begins with (its intensity, ray). Expanding a branch state with intensity
+// I walks its stretch (stretch.hpp): after every event the intensity becomes
+// floor(I * f), f the factor of the direction leaving it
+// (event_rule.hpp, outgoing_factor); a target passed on the way gets the
+// candidate (intensity there, ray), and where the stretch ends at a split
+// each direction leaving it reaches its branch state with floor(I * f).
+// Every factor is at most 1, so intensities never grow along a branch, and
+// I -> floor(I * f) is monotone, so the more intense of two labels at a
+// state stays at least as intense along every continuation. Hence, as in
+// Dijkstra's algorithm (and Isobe et al.'s order over their objects), the
+// first time a state is popped its intensity is the greatest over all
+// branches reaching it, and a target's best candidate is final once no
+// waiting state is more intense. A stretch stops as soon as its intensity
+// is <= the threshold: nothing after it can light a target.
+#include "engine/intensity_search.hpp"
+
+#include "engine/branch_state_set.hpp"
+#include "engine/lattice_stepper.hpp"
+#include "engine/stretch.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <new>
+#include <stdexcept>
+
+namespace orthoray::engine {
+namespace {
+
+// What is kept per branch state besides its key.
+struct Record {
+    Integer intensity;
+    std::uint64_t reflections; // of the branch that gave the intensity
+    std::uint32_t ray;         // from 1
+    bool settled;
+};
+
+// A queue entry; one left behind by a more intense label later is skipped.
+struct Waiting {
+    Integer intensity;
+    std::uint32_t ray, state;
+};
+
+// Whether `a` is served after `b`: the heap keeps the first served on top.
+bool after(const Waiting& a, const Waiting& b) {
+    if (a.intensity != b.intensity) return a.intensity < b.intensity;
+    if (a.ray != b.ray) return a.ray > b.ray;
+    return a.state > b.state;
+}
+
+// A target's most intense candidate so far.
+struct Candidate {
+    bool found = false;
+    Integer intensity;
+    std::uint32_t ray = 0;
+    std::uint64_t reflections = 0;
+};
+
+// floor(intensity * factor): the intensity after an event (intensity >= 0).
+Integer attenuated(const Integer& intensity, const Rational& factor) {
+    if (factor == 1) return intensity;
+    Integer product = intensity * factor.get_num();
+    mpz_fdiv_q(product.get_mpz_t(), product.get_mpz_t(), factor.get_den().get_mpz_t());
+    return product;
+}
+
+class IntensitySearch {
+public:
+    IntensitySearch(const Scene& scene, const SolveOptions& options, const EventStepper& stepper)
+        : scene_(scene), options_(options), stepper_(stepper), threshold_(*options.min_intensity),
+          budget_(options.max_state_bytes), states_(scene, budget_), best_(scene.targets.size()) {}
+
+    Answer run() {
+        try {
+            search();
+        } catch (const std::bad_alloc&) {
+            limit_ = Limit::memory;
+        }
+        return conclude();
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    void search() {
+        for (std::size_t r = 0; r < scene_.rays.size(); ++r) {
+            const Ray& ray = scene_.rays[r];
+            if (*ray.intensity <= threshold_) continue; // it lights nothing
+            if (!reach(ray.start, ray.direction, *ray.intensity, 0,
+                       static_cast<std::uint32_t>(r + 1))) {
+                limit_ = Limit::memory;
+                return;
+            }
+        }
+        for (;;) {
+            const std::optional<Waiting> next = pop();
+            if (!next) return; // every branch state above the threshold is expanded
+            if (all_final(next->intensity)) return;
+            pending_ = next->intensity;
+            if (!poll()) return;
+            Record& record = records_[next->state];
+            record.settled = true;
+            ++expanded_;
+            if (!expand(next->state, record.intensity, record.reflections, record.ray)) return;
+            pending_.reset();
+        }
+    }
+
+    // The first entry to serve whose state is unsettled and still carries
+    // that label; nullopt when none is left.
+    std::optional<Waiting> pop() {
+        while (!queue_.empty()) {
+            std::pop_heap(queue_.begin(), queue_.end(), after);
+            Waiting w = std::move(queue_.back());
+            queue_.pop_back();
+            const Record& r = records_[w.state];
+            if (!r.settled && r.intensity == w.intensity && r.ray == w.ray) return w;
+        }
+        return std::nullopt;
+    }
+
+    // Every target has a candidate no waiting state can beat: a state with
+    // intensity I gives nothing more intense than I.
+    bool all_final(const Integer& most_waiting) const {
+        for (const Candidate& c : best_)
+            if (!c.found || c.intensity < most_waiting) return false;
+        return true;
+    }
+
+    // Polls the monitor about every 10 ms; false (limit_ set) to stop.
+    bool poll() {
+        if (!options_.monitor) return true;
+        const Clock::time_point now = Clock::now();
+        if (now < next_poll_) return true;
+        next_poll_ = now + std::chrono::milliseconds(10);
+        limit_ = options_.monitor->poll(expanded_);
+        return !limit_;
+    }
+
+    // Reaches (p, v) with this label; false when the budget refuses room.
+    bool reach(const Vector& p, const Vector& v, const Integer& intensity,
+               std::uint64_t reflections, std::uint32_t ray) {
+        if (!budget_.make_room(records_) || !budget_.make_room(queue_)) return false;
+        const std::optional<BranchStateSet::Inserted> at = states_.insert(p, v);
+        if (!at) return false;
+        const Waiting entry{intensity, ray, at->index};
+        if (at->added) {
+            records_.push_back({intensity, reflections, ray, false});
+        } else {
+            Record& r = records_[at->index];
+            if (r.settled || !after(Waiting{r.intensity, r.ray, at->index}, entry)) return true;
+            r.intensity = intensity;
+            r.reflections = reflections;
+            r.ray = ray;
+        }
+        queue_.push_back(entry);
+        std::push_heap(queue_.begin(), queue_.end(), after);
+        return true;
+    }
+
+    // Walks the stretch of branch state `b`; false (limit_ set) when a limit
+    // cut it short.
+    bool expand(std::uint32_t b, Integer intensity, std::uint64_t reflections, std::uint32_t ray) {
+        Vector p, v;
+        states_.state(b, p, v);
+        bool faded = false;
+        std::vector<const Element*> split_acting; // the elements at the split ending it
+        const StretchEnd end = walk_stretch(
+            stepper_, p, v,
+            [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
+                if (intensity <= threshold_) {
+                    faded = true;
+                    return false;
+                }
+                if (options_.max_steps && events_ == *options_.max_steps) {
+                    limit_ = Limit::steps;
+                    return false;
+                }
+                ++events_;
+                for (std::size_t t = 0; t < best_.size(); ++t) {
+                    Candidate& c = best_[t];
+                    if (c.found &&
+                        (intensity < c.intensity || (intensity == c.intensity && ray >= c.ray)))
+                        continue;
+                    if (stepper_.passes(scene_.targets[t], q, u, e))
+                        c = {true, intensity, ray, reflections + w};
+                }
+                if (!e.escape && !e.absorbed) {
+                    if (e.outgoing.size() == 1)
+                        intensity = attenuated(
+                            intensity, outgoing_factor(e.acting, u, e.outgoing.front().direction));
+                    else
+                        split_acting = e.acting;
+                }
+                return poll();
+            });
+        if (end.kind == StretchEnd::Kind::stopped) return faded;
+        if (end.kind != StretchEnd::Kind::split) return true;
+        for (const Outgoing& out : end.outgoing) {
+            const Integer child =
+                attenuated(intensity, outgoing_factor(split_acting, end.incoming, out.direction));
+            if (child <= threshold_) continue;
+            if (!reach(end.point, out.direction, child,
+                       reflections + end.reflections + (out.reflection ? 1 : 0), ray)) {
+                limit_ = Limit::memory;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    Answer conclude() const {
+        Answer answer;
+        answer.engine = EngineUsed::branches;
+        answer.arithmetic = ArithmeticUsed::rational;
+        answer.shooter = stepper_.shooter();
+        answer.targets.assign(scene_.targets.size(), TargetAnswer{});
+        // At a limit a candidate is final only when no waiting state (nor
+        // the one cut short) is more intense.
+        std::optional<Integer> most = pending_;
+        if (limit_)
+            for (const Waiting& w : queue_) {
+                const Record& r = records_[w.state];
+                if (!r.settled && r.intensity == w.intensity && r.ray == w.ray &&
+                    (!most || *most < w.intensity))
+                    most = w.intensity;
+            }
+        bool all = true;
+        for (std::size_t t = 0; t < best_.size(); ++t) {
+            const Candidate& c = best_[t];
+            TargetAnswer& target = answer.targets[t];
+            if (c.found && (!limit_ || !most || !(c.intensity < *most))) {
+                target.status = TargetAnswer::Status::lit;
+                target.intensity = c.intensity;
+                target.reflections = Integer(static_cast<unsigned long>(c.reflections));
+                target.ray = c.ray;
+                if (target.reflections > answer.reflections)
+                    answer.reflections = target.reflections;
+            } else {
+                target.status =
+                    limit_ ? TargetAnswer::Status::unknown : TargetAnswer::Status::unlit;
+                all = false;
+            }
+        }
+        answer.reason = limit_ ? Reason::limit : all ? Reason::lit : Reason::unlit;
+        if (limit_) answer.limit = *limit_;
+        answer.states = Integer(static_cast<unsigned long>(states_.size()));
+        answer.stats.illumination = {expanded_, events_, budget_.used()};
+        return answer;
+    }
+
+    const Scene& scene_;
+    const SolveOptions& options_;
+    const EventStepper& stepper_;
+    const Integer threshold_;
+    ByteBudget budget_;
+    BranchStateSet states_;
+    std::vector<Record> records_;
+    std::vector<Waiting> queue_; // a binary heap, the most intense on top
+    std::vector<Candidate> best_;
+    std::optional<Limit> limit_;
+    // The intensity of the branch state being expanded.
+    std::optional<Integer> pending_;
+    std::uint64_t expanded_ = 0, events_ = 0;
+    Clock::time_point next_poll_ = Clock::now();
+};
+
+void check(const Scene& scene, const SolveOptions& options) {
+    if (!options.min_intensity || *options.min_intensity < 0)
+        throw std::invalid_argument("solve_intensity: min_intensity must be a natural number");
+    if (options.illumination_observer || options.induction_observer || options.path)
+        throw std::invalid_argument("the intensity search writes no certificate");
+    for (const Ray& ray : scene.rays)
+        if (!ray.intensity)
+            throw UnsupportedScene("the intensity question needs an intensity on every ray (the "
+                                   "ray on line " +
+                                   std::to_string(ray.line) + " has none)");
+}
+
+} // namespace
+
+Answer solve_intensity(const Scene& scene, const SolveOptions& options,
+                       const EventStepper& stepper) {
+    check(scene, options);
+    return IntensitySearch(scene, options, stepper).run();
+}
+
+Answer solve_intensity(const Scene& scene, const SolveOptions& options) {
+    check(scene, options);
+    // The lattices' grids take O(n) memory each: running out while building
+    // them is a memory limit like any other.
+    std::unique_ptr<EventStepper> stepper;
+    try {
+        if (options.engine != Engine::reference && LatticeStepper::applies(scene))
+            stepper = std::make_unique<LatticeStepper>(scene);
+        else
+            stepper = std::make_unique<ReferenceStepper>(scene);
+    } catch (const std::bad_alloc&) {
+        Answer answer;
+        answer.engine = EngineUsed::branches;
+        answer.limit = Limit::memory;
+        answer.targets.assign(scene.targets.size(), TargetAnswer{});
+        return answer;
+    }
+    return IntensitySearch(scene, options, *stepper).run();
+}
+
+} // namespace orthoray::engine

@@ -1,0 +1,143 @@
+// The realistic model of a mirror scene (docs/realistic-scenes.md, "From
+// mirror scenes"). Every reachable state of the scene's ray, all branches
+// at once, is walked on the ray's lattice (or with the rational scan where
+// diagonals leave it); each segment is a leg from the object of the event it
+// leaves (the source for the first) to the object of the event it reaches,
+// and to the receiver when it passes the target. Consecutive legs give the
+// triples, the transfer of a triple being floor(i * f) with f the factor of
+// the event at its middle object (event_rule.hpp, outgoing_factor). The
+// legs are exact; what the model forgets is which state a leg came from, so
+// the dynamic program may chain triples that no single ray follows.
+#include "orthoray/realistic.hpp"
+
+#include "engine/event_stepper.hpp"
+#include "engine/lattice_stepper.hpp"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <set>
+#include <tuple>
+
+namespace orthoray {
+namespace {
+
+constexpr std::size_t source_object = 0, receiver_object = 1;
+
+// One state to walk: the segment from p along v leaves object `current`,
+// reached from `previous`, with `factor` of the event there.
+struct Item {
+    Vector p, v;
+    std::size_t previous, current;
+    Rational factor;
+    bool operator<(const Item& o) const {
+        return std::tie(p, v, previous, current, factor) <
+               std::tie(o.p, o.v, o.previous, o.current, o.factor);
+    }
+};
+
+// The object an event belongs to: the first element acting there, in file
+// order (a corner's elements share one event; docs say so).
+std::size_t object_of(const Scene& scene, const std::vector<const Element*>& acting) {
+    std::size_t first = scene.elements.size();
+    for (const Element* e : acting)
+        first = std::min(first, static_cast<std::size_t>(e - scene.elements.data()));
+    return first + 2;
+}
+
+class ModelBuilder {
+public:
+    ModelBuilder(const Scene& scene, std::size_t target, std::size_t max_states)
+        : scene_(scene), target_(scene.targets.at(target)), max_states_(max_states) {
+        if (engine::LatticeStepper::applies(scene))
+            stepper_ = std::make_unique<engine::LatticeStepper>(scene);
+        else
+            stepper_ = std::make_unique<engine::ReferenceStepper>(scene);
+    }
+
+    RealisticModel build(const Integer& eps) {
+        const Ray& ray = scene_.ray();
+        walk({ray.start, ray.direction, source_object, source_object, Rational(1)});
+        RealisticModel model;
+        model.objects = {"S", "R"};
+        for (std::size_t i = 0; i < scene_.elements.size(); ++i) {
+            // Appended, not "e" + ...: GCC 12 warns falsely on that (-Wrestrict).
+            std::string name(1, 'e');
+            name.append(std::to_string(i + 1));
+            model.objects.push_back(std::move(name));
+        }
+        model.source = source_object;
+        model.receiver = receiver_object;
+        model.emitted = *ray.intensity;
+        model.eps = eps;
+        model.first_legs.assign(first_legs_.begin(), first_legs_.end());
+        for (const auto& [key, factor] : triples_) {
+            Triple t;
+            std::tie(t.from, t.via, t.to) = key;
+            t.transfer.p = factor.get_num();
+            t.transfer.q = factor.get_den();
+            model.triples.push_back(std::move(t));
+        }
+        return model;
+    }
+
+private:
+    // Every state reachable from `start`, each once.
+    void walk(Item start) {
+        std::vector<Item> work{std::move(start)};
+        while (!work.empty()) {
+            Item item = std::move(work.back());
+            work.pop_back();
+            if (!seen_.insert(item).second) continue;
+            if (seen_.size() > max_states_)
+                throw UnsupportedScene("the scene's ray reaches more than " +
+                                       std::to_string(max_states_) +
+                                       " states: too many to derive its realistic model");
+            const engine::ReferenceEvent e = stepper_->next(item.p, item.v);
+            if (stepper_->passes(target_, item.p, item.v, e)) leg(item, receiver_object);
+            if (e.escape) continue;
+            const std::size_t next = object_of(scene_, e.acting);
+            leg(item, next);
+            for (const engine::Outgoing& out : e.outgoing)
+                work.push_back({e.point, out.direction, item.current, next,
+                                engine::outgoing_factor(e.acting, item.v, out.direction)});
+        }
+    }
+
+    // The leg item.current -> to: a first leg from the source, else the
+    // triple (previous, current, to) with the factor at `current`. The same
+    // triple met at several events with different factors keeps the
+    // greatest, so the model never passes on less than the scene.
+    void leg(const Item& item, std::size_t to) {
+        if (item.current == source_object) {
+            first_legs_.insert(to);
+            return;
+        }
+        const auto key = std::tuple{item.previous, item.current, to};
+        const auto [it, added] = triples_.emplace(key, item.factor);
+        if (!added && it->second < item.factor) it->second = item.factor;
+    }
+
+    const Scene& scene_;
+    const Vector& target_;
+    std::size_t max_states_;
+    std::unique_ptr<engine::EventStepper> stepper_;
+    std::set<Item> seen_;
+    std::set<std::size_t> first_legs_;
+    std::map<std::tuple<std::size_t, std::size_t, std::size_t>, Rational> triples_;
+};
+
+} // namespace
+
+RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
+                                        std::size_t max_states) {
+    if (scene.rays.size() != 1 || !scene.ray().intensity)
+        throw UnsupportedScene("a realistic model is derived from a scene with exactly one ray, "
+                               "which carries an intensity (docs/realistic-scenes.md)");
+    if (target >= scene.targets.size())
+        throw UnsupportedScene("the scene has " + std::to_string(scene.targets.size()) +
+                               " targets, not " + std::to_string(target + 1));
+    return ModelBuilder(scene, target, max_states).build(eps);
+}
+
+} // namespace orthoray
