@@ -217,7 +217,7 @@ private:
         Answer answer;
         answer.engine = EngineUsed::branches;
         answer.arithmetic = ArithmeticUsed::rational;
-        answer.shooter = stepper_.shooter();
+        stepper_.describe(answer);
         answer.targets.assign(scene_.targets.size(), TargetAnswer{});
         // At a limit a candidate is final only when no waiting state (nor
         // the one cut short) is more intense.
@@ -295,10 +295,8 @@ Answer solve_intensity(const Scene& scene, const SolveOptions& options) {
     // them is a memory limit like any other.
     std::unique_ptr<EventStepper> stepper;
     try {
-        if (options.engine != Engine::reference && LatticeStepper::applies(scene))
-            stepper = std::make_unique<LatticeStepper>(scene);
-        else
-            stepper = std::make_unique<ReferenceStepper>(scene);
+        stepper = options.engine == Engine::reference ? std::make_unique<ReferenceStepper>(scene)
+                                                      : fastest_stepper(scene);
     } catch (const std::bad_alloc&) {
         Answer answer;
         answer.engine = EngineUsed::branches;
