@@ -181,6 +181,13 @@ public:
         return limit.has_value();
     }
 
+    // Polls the monitor from inside a setup phase (lattice/setup_poll.hpp):
+    // at every unit on GMP integers, where one can take milliseconds, and
+    // every 64 units on machine integers, where one takes about a microsecond.
+    lattice::SetupPoll setup_poll() const {
+        return {options_.monitor, reflections_, std::is_same_v<Int, Integer> ? 1u : 64u};
+    }
+
     std::uint64_t reflections() const { return reflections_; }
     const Int (&target() const)[M] { return target_; }
     Answer& answer() { return answer_; }
@@ -381,7 +388,8 @@ bool clustered(std::size_t fullest, std::size_t members, std::size_t cells) {
 template <class Int, int M, class Detector>
 Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const SolveOptions& options) {
     auto begin = std::chrono::steady_clock::now();
-    const shoot::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2);
+    const shoot::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2,
+                                          run.setup_poll());
     Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
@@ -413,8 +421,9 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         auto table = shoot::PieceTable<Int>::build(ls, grid,
                                                    options.engine == Engine::induction
                                                        ? induction::piece_cap(grid.size())
-                                                       : 64 * grid.size() + 1024);
-        if (table && ls.target_reachable) table->mark_target(grid, run.target());
+                                                       : 64 * grid.size() + 1024,
+                                                   run.setup_poll());
+        if (table && ls.target_reachable) table->mark_target(grid, run.target(), run.setup_poll());
         setup.seconds += seconds_since(begin);
         if (run.stopped_by_monitor()) return run.answer();
         if (table) {
@@ -434,8 +443,8 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                         : at_step_cost(induction_budget(table->size(), ls.magnitude), ls.magnitude);
                 if (run.advance_in_chunks(by_table, run.reflections() + budget))
                     return run.answer();
-                induction::Decision decision =
-                    induction::decide(ls, grid, *table, options, run.reflections());
+                induction::Decision decision = induction::decide(
+                    ls, grid, *table, options, run.reflections(), run.setup_poll());
                 if (decision.answer) {
                     decision.answer->stats.setup = setup;
                     return *decision.answer;
@@ -498,6 +507,11 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
             return run_planar(run, ls, options);
         else
             return run_spatial(run, ls, options);
+    } catch (const lattice::SetupStopped& stopped) {
+        // Stopped inside a setup phase (a shooter, the tables, the
+        // exchange): the phase is dropped, the reflections taken stand.
+        run.stop(stopped.limit);
+        return run.answer();
     } catch (const std::bad_alloc&) {
         // Building a shooter (grid, tables, hierarchy) is what allocates;
         // the reflections performed before it are still exact.
@@ -531,7 +545,17 @@ Answer run_with_int(const LatticeScene& ls, const SolveOptions& options) {
 } // namespace
 
 Answer solve_on_lattice(const Scene& scene, const SolveOptions& options) {
-    const LatticeScene ls = lattice::make_lattice(scene);
+    LatticeScene ls;
+    try {
+        ls = lattice::make_lattice(scene, lattice::SetupPoll(options.monitor, 0));
+    } catch (const lattice::SetupStopped& stopped) {
+        // Stopped while scaling: no reflection taken, no arithmetic chosen yet.
+        Answer answer;
+        answer.engine = EngineUsed::lattice;
+        answer.reason = Reason::limit;
+        answer.limit = stopped.limit;
+        return answer;
+    }
     // The narrowest type the bound proves safe, unless a wider one is asked for.
     const bool fits64 = ls.magnitude < lattice::int64_limit();
     const bool fits128 = ls.magnitude < lattice::int128_limit();

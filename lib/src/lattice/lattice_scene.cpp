@@ -13,7 +13,7 @@ Integer abs_of(const Integer& a) {
 
 } // namespace
 
-LatticeScene make_lattice(const Scene& scene) {
+LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll) {
     LatticeScene out;
     out.scene = &scene;
     const Vector& v = scene.ray().direction;
@@ -53,6 +53,7 @@ LatticeScene make_lattice(const Scene& scene) {
     take_denominators(scene.ray().start);
     take_denominators(scene.target());
     for (const Element& e : scene.elements) {
+        poll();
         if (!spans_start(e)) continue;
         take_denominators(e.lo);
         take_denominators(e.hi);
@@ -78,6 +79,7 @@ LatticeScene make_lattice(const Scene& scene) {
         for (int i = 0; i < out.dim; ++i) track(out.target[i]);
     out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
+        poll();
         if (!spans_start(e)) continue;
         LatticeElement le;
         le.absorber = e.kind == ElementKind::absorber;

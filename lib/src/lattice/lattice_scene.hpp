@@ -14,6 +14,7 @@
 // M-dimensional problem, M = number of nonzero direction components.
 #pragma once
 
+#include "lattice/setup_poll.hpp"
 #include "orthoray/scene.hpp"
 
 #include <array>
@@ -58,6 +59,7 @@ struct LatticeScene {
     bool to_lattice(const Vector& x, Coords& out) const;
 };
 
-LatticeScene make_lattice(const Scene& scene);
+// `poll` is called once an element (SetupPoll: it may throw SetupStopped).
+LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll = {});
 
 } // namespace orthoray::lattice
