@@ -148,7 +148,8 @@ public:
         if (!options_.monitor) return advance(shoot, until);
         using Clock = std::chrono::steady_clock;
         constexpr double chunk_seconds = 0.01;
-        std::uint64_t chunk = 64;
+        // From 1: on 10^6-digit coordinates one reflection takes milliseconds.
+        std::uint64_t chunk = 1;
         while (true) {
             if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
                 answer_.limit = *limit;
@@ -465,8 +466,9 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         return build_and_finish(run, ShooterUsed::bvh,
                                 [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
     if (options.shooter == Shooter::section)
-        return build_and_finish(run, ShooterUsed::section,
-                                [&] { return shoot::CrossSectionGrid<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::section, [&] {
+            return shoot::CrossSectionGrid<Int, M>(ls, 1, run.setup_poll());
+        });
     return finish_with(run, ShooterUsed::grid, grid);
 }
 
@@ -478,7 +480,8 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
     switch (options.shooter) {
     case Shooter::grid:
         return build_and_finish(run, ShooterUsed::grid, [&] {
-            return shoot::UniformGrid<Int, M>(ls, options.grid_density ? options.grid_density : 32);
+            return shoot::UniformGrid<Int, M>(ls, options.grid_density ? options.grid_density : 32,
+                                              run.setup_poll());
         });
     case Shooter::bvh:
         return build_and_finish(run, ShooterUsed::bvh,
@@ -487,7 +490,7 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
         break;
     }
     auto begin = std::chrono::steady_clock::now();
-    const shoot::CrossSectionGrid<Int, M> section(ls);
+    const shoot::CrossSectionGrid<Int, M> section(ls, 1, run.setup_poll());
     Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = section.cell_count();
