@@ -180,6 +180,47 @@ TEST_CASE("a stop at any poll of the setup on huge numbers ends the run cleanly"
     }
 }
 
+TEST_CASE("in 3D too a stop at any poll of the setup on huge numbers ends the run cleanly",
+          "[stop_requests][slow]") {
+    // The cross-section grid polls from inside as well. It also used to
+    // find each cell side's shift by counting up from 0, one shift of a
+    // number that long per bit: this box's setup took seconds (324 s at
+    // 10^6 digits), now a round or two.
+    Integer side;
+    mpz_ui_pow_ui(side.get_mpz_t(), 10, 100'000);
+    Scene box;
+    box.dim = 3;
+    const std::vector<Rational> sides = {side + 1, side, side - 1};
+    for (int axis = 0; axis < 3; ++axis)
+        for (const Rational& offset : {Rational(0), sides[static_cast<std::size_t>(axis)]}) {
+            std::vector<std::pair<Rational, Rational>> extent;
+            for (int j = 0; j < 3; ++j)
+                if (j != axis) extent.emplace_back(0, sides[static_cast<std::size_t>(j)]);
+            box.add_mirror(axis, offset, extent);
+        }
+    box.ray().direction = Vector{1, 1, 1};
+    box.target() = Vector{Rational(1, 2), Rational(1, 3), Rational(1, 5)};
+    SolveOptions options;
+    options.max_steps = 1000; // the answer needs about 10^200000 reflections
+    StopAtPoll never(0);
+    options.monitor = &never;
+    const Answer whole = solve(box, options);
+    CHECK(whole.limit == Limit::steps);
+    CHECK(whole.reflections == 1000);
+    CHECK(whole.shooter == ShooterUsed::section);
+    const std::uint64_t runs = std::min<std::uint64_t>(never.polls, 40);
+    for (std::uint64_t k = 1; k <= runs; ++k) {
+        CAPTURE(k);
+        StopAtPoll monitor(k);
+        options.monitor = &monitor;
+        const Answer stopped = solve(box, options);
+        CHECK(stopped.reason == Reason::limit);
+        CHECK(stopped.limit == Limit::interrupt);
+        CHECK(stopped.reflections == monitor.reported);
+        if (k == 1) CHECK(stopped.arithmetic == ArithmeticUsed::none);
+    }
+}
+
 TEST_CASE("setup on 10^6-digit sides never runs long without a poll", "[stop_requests][slow]") {
     // Before the setup phases polled from inside, building the tables or
     // the exchange was over half of this run's CPU time without a poll, so a
