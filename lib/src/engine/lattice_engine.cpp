@@ -463,8 +463,9 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     if (options.shooter == Shooter::bvh ||
         (options.shooter == Shooter::automatic &&
          clustered(grid.fullest_cell(), grid.size(), grid.cell_count())))
-        return build_and_finish(run, ShooterUsed::bvh,
-                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh, [&] {
+            return shoot::BoundingVolumeHierarchy<Int, M>(ls, run.setup_poll());
+        });
     if (options.shooter == Shooter::section)
         return build_and_finish(run, ShooterUsed::section, [&] {
             return shoot::CrossSectionGrid<Int, M>(ls, 1, run.setup_poll());
@@ -484,8 +485,9 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
                                               run.setup_poll());
         });
     case Shooter::bvh:
-        return build_and_finish(run, ShooterUsed::bvh,
-                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh, [&] {
+            return shoot::BoundingVolumeHierarchy<Int, M>(ls, run.setup_poll());
+        });
     default:
         break;
     }
@@ -496,8 +498,9 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
     setup.cells = section.cell_count();
     if (options.shooter == Shooter::automatic &&
         clustered(section.fullest_cell(), section.member_count(), section.cell_count()))
-        return build_and_finish(run, ShooterUsed::bvh,
-                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh, [&] {
+            return shoot::BoundingVolumeHierarchy<Int, M>(ls, run.setup_poll());
+        });
     return finish_with(run, ShooterUsed::section, section);
 }
 

@@ -1,6 +1,6 @@
 // Polls a RunMonitor from inside the setup of a run on the lattice: scaling
-// the scene, building the uniform grid and the piece tables, and the
-// induction's interval exchange. Each is linear in the input, but on
+// the scene, building a shooter (uniform grid, piece tables, cross-section
+// grid, hierarchy) and the induction's interval exchange. Each is linear in the input, but on
 // huge numbers one takes a few hundred milliseconds (a 10^6-digit product or
 // quotient is some 20 to 50 ms), and a stop request must be honoured within
 // 100 ms (docs/limits.md). The loops of a phase call the poll once per unit
