@@ -1,14 +1,15 @@
 // Polls a RunMonitor from inside the setup of a run on the lattice: scaling
 // the scene, building a shooter (uniform grid, piece tables, cross-section
-// grid, hierarchy) and the induction's interval exchange. Each is linear in the input, but on
-// huge numbers one takes a few hundred milliseconds (a 10^6-digit product or
-// quotient is some 20 to 50 ms), and a stop request must be honoured within
-// 100 ms (docs/limits.md). The loops of a phase call the poll once per unit
-// of work (an element, an event, a slot of the tables); it reads the clock
-// and asks the monitor at most every few milliseconds, and when the monitor
-// says stop it throws SetupStopped, which the engine catches where the run
-// begins: the phase is abandoned as a whole, so no half-built structure is
-// ever used, and no answer depends on when (or whether) the poll was made.
+// grid, hierarchy) and the induction's interval exchange. Each is linear in
+// the input, but on huge numbers one takes a few hundred milliseconds (a
+// 10^6-digit product or quotient is some 20 to 50 ms), and a stop request
+// must be honoured within 100 ms (docs/limits.md). The loops of a phase call
+// the poll once per unit of work (an element, an event, a slot of the
+// tables); it reads the clock and asks the monitor at most every few
+// milliseconds, and when the monitor says stop it throws SetupStopped, which
+// the engine catches where the run begins: the phase is abandoned as a
+// whole, so no half-built structure is ever used, and no answer depends on
+// when (or whether) the poll was made.
 #pragma once
 
 #include "orthoray/solve.hpp"
