@@ -142,8 +142,8 @@ void run_scene(std::size_t n, std::size_t shots, int runs, std::vector<Row>& row
                                          {4, 1}, {8, 1}, {16, 1}, {32, 1}, {64, 1}};
     std::vector<std::array<double, 3>> fit_rows;
     for (const auto& [cells, per] : sweep) {
-        const shoot::UniformGrid<Int, M> plain(ls, cells, per);
-        const shoot::UniformGrid<Int, M, shoot::Counting> counted(ls, cells, per);
+        const shoot::UniformGrid<Int, M> plain(ls, cells, {}, per);
+        const shoot::UniformGrid<Int, M, shoot::Counting> counted(ls, cells, {}, per);
         Row row;
         row.dim = M;
         row.n = n;

@@ -75,8 +75,8 @@ void check_uniform_grid_counts(std::uint64_t seed) {
         LatticeScene ls = test::random_box_scene<M>(rng, test::pick(rng, 1, 40), 200);
         test::make_one_sided<M>(rng, ls, 30);
         const std::int64_t density = test::pick(rng, 1, 16), per = test::pick(rng, 1, 4);
-        const UniformGrid<Int, M> plain(ls, density, per);
-        const UniformGrid<Int, M, Counting> counted(ls, density, per);
+        const UniformGrid<Int, M> plain(ls, density, {}, per);
+        const UniformGrid<Int, M, Counting> counted(ls, density, {}, per);
         Int lo[M], h[M];
         for (int j = 0; j < M; ++j) {
             lo[j] = 0; // the box [0, 200]^M bounds every element

@@ -13,13 +13,16 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <ctime>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <sys/wait.h>
 #include <thread>
+#include <vector>
 
 using namespace orthoray;
 using namespace orthoray::test;
@@ -35,6 +38,29 @@ std::string big_box(const TempDir& dir, unsigned digits) {
     box.sides = {side + 1, side};
     box.target = BoxFamily::Target::generic;
     return dir.write("big.scene", write_generated(generate_box(box)));
+}
+
+// The same box built directly (generate_box's notes take seconds at 10^6
+// digits), with its answer: the sides a, b are coprime, so the 45-degree
+// ray from the corner 0 is periodic with period 2 (a + b - 1) and misses a
+// target on no line x +- y = integer (docs/generate.md).
+struct BigBox {
+    Scene scene;
+    Integer period;
+};
+BigBox big_box_scene(unsigned digits) {
+    Integer b;
+    mpz_ui_pow_ui(b.get_mpz_t(), 10, digits);
+    const Integer a = b + 1;
+    BigBox box;
+    box.scene.add_mirror(0, 0, {{0, b}});
+    box.scene.add_mirror(0, a, {{0, b}});
+    box.scene.add_mirror(1, 0, {{0, a}});
+    box.scene.add_mirror(1, b, {{0, a}});
+    box.scene.ray().direction = Vector{1, 1, 0};
+    box.scene.target() = Vector{Rational(1, 2), Rational(1, 3), 0};
+    box.period = 2 * (a + b - 1);
+    return box;
 }
 
 // Waits for `child` at most `seconds`; kills it (and fails) past that.
@@ -61,6 +87,75 @@ public:
     std::uint64_t highest = 0;
 };
 
+// Answers interrupt from its `stop_at`-th poll on (never with 0), counting
+// the polls and keeping the reflections reported at the stopping one.
+class StopAtPoll : public RunMonitor {
+public:
+    explicit StopAtPoll(std::uint64_t stop_at) : stop_at_(stop_at) {}
+    std::optional<Limit> poll(std::uint64_t reflections) override {
+        if (++polls != stop_at_) return std::nullopt;
+        reported = reflections;
+        return Limit::interrupt;
+    }
+    std::uint64_t polls = 0, reported = 0;
+
+private:
+    std::uint64_t stop_at_;
+};
+
+// Solves `scene` again with a monitor that stops it at its k-th poll, for
+// each k up to `polls` (what an unstopped run made; at most 40). The polls
+// are paced by the clock, so a run may poll fewer times than that one did:
+// one that never reaches its k-th poll must give the unstopped answer.
+void check_stops_at_each_poll(const Scene& scene, SolveOptions options, const Answer& whole,
+                              std::uint64_t polls) {
+    for (std::uint64_t k = 1; k <= std::min<std::uint64_t>(polls, 40); ++k) {
+        CAPTURE(k);
+        StopAtPoll monitor(k);
+        options.monitor = &monitor;
+        const Answer stopped = solve(scene, options);
+        if (monitor.polls < k) {
+            CHECK(stopped.reason == whole.reason);
+            CHECK(stopped.limit == whole.limit);
+            CHECK(stopped.reflections == whole.reflections);
+            continue;
+        }
+        CHECK(stopped.reason == Reason::limit);
+        CHECK(stopped.limit == Limit::interrupt);
+        CHECK(stopped.reflections == monitor.reported);
+        // The first poll is in the scaling, before an arithmetic is chosen.
+        if (k == 1) CHECK(stopped.arithmetic == ArithmeticUsed::none);
+    }
+}
+
+// The calling thread's CPU time in seconds: what the run itself spent,
+// whatever else the machine is doing.
+double thread_cpu_seconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+// Records the longest stretch of the run's CPU time without a poll.
+class LongestSilence : public RunMonitor {
+public:
+    LongestSilence() : last_(thread_cpu_seconds()) {}
+    std::optional<Limit> poll(std::uint64_t) override {
+        note();
+        return std::nullopt;
+    }
+    // The stretch since the last poll counts too (call at the end).
+    void note() {
+        const double now = thread_cpu_seconds();
+        longest = std::max(longest, now - last_);
+        last_ = now;
+    }
+    double longest = 0;
+
+private:
+    double last_;
+};
+
 } // namespace
 
 TEST_CASE("SIGTERM during setup on 10^6-digit sides: exit 3, interrupt", "[stop_requests][cli]") {
@@ -79,6 +174,77 @@ TEST_CASE("SIGTERM during setup on 10^6-digit sides: exit 3, interrupt", "[stop_
     const nlohmann::json j = nlohmann::json::parse(slurp(dir.path("out")));
     CHECK(j["answer"] == "unknown");
     CHECK(j["limit"] == "interrupt");
+}
+
+TEST_CASE("a stop at any poll of the setup on huge numbers ends the run cleanly",
+          "[stop_requests]") {
+    // Scaling, the grid, the tables and the exchange poll the monitor from
+    // inside (lattice/setup_poll.hpp); a stop there abandons the phase and
+    // reports the reflections taken. Each phase's first unit polls, so every
+    // phase is stopped in one of these runs, whatever the machine's speed.
+    const BigBox box = big_box_scene(100'000);
+    SolveOptions options;
+    options.engine = Engine::induction;
+    StopAtPoll never(0);
+    options.monitor = &never;
+    const Answer whole = solve(box.scene, options);
+    CHECK(whole.reason == Reason::cycle);
+    CHECK(whole.reflections == box.period);
+    CHECK(never.polls >= 5); // scaling, grid, tables, exchange, induction
+    check_stops_at_each_poll(box.scene, options, whole, never.polls);
+}
+
+TEST_CASE("in 3D too a stop at any poll of the setup on huge numbers ends the run cleanly",
+          "[stop_requests][slow]") {
+    // The cross-section grid polls from inside as well. It also used to
+    // find each cell side's shift by counting up from 0, one shift of a
+    // number that long per bit: this box's setup took seconds (324 s at
+    // 10^6 digits), now a round or two.
+    Integer side;
+    mpz_ui_pow_ui(side.get_mpz_t(), 10, 100'000);
+    Scene box;
+    box.dim = 3;
+    const std::vector<Rational> sides = {side + 1, side, side - 1};
+    for (int axis = 0; axis < 3; ++axis)
+        for (const Rational& offset : {Rational(0), sides[static_cast<std::size_t>(axis)]}) {
+            std::vector<std::pair<Rational, Rational>> extent;
+            for (int j = 0; j < 3; ++j)
+                if (j != axis) extent.emplace_back(0, sides[static_cast<std::size_t>(j)]);
+            box.add_mirror(axis, offset, extent);
+        }
+    box.ray().direction = Vector{1, 1, 1};
+    box.target() = Vector{Rational(1, 2), Rational(1, 3), Rational(1, 5)};
+    SolveOptions options;
+    options.max_steps = 1000; // the answer needs about 10^200000 reflections
+    StopAtPoll never(0);
+    options.monitor = &never;
+    const Answer whole = solve(box, options);
+    CHECK(whole.limit == Limit::steps);
+    CHECK(whole.reflections == 1000);
+    CHECK(whole.shooter == ShooterUsed::section);
+    check_stops_at_each_poll(box, options, whole, never.polls);
+}
+
+TEST_CASE("setup on 10^6-digit sides never runs long without a poll", "[stop_requests][slow]") {
+    // Before the setup phases polled from inside, building the tables or
+    // the exchange was over half of this run's CPU time without a poll, so a
+    // stop request waited up to a few hundred milliseconds. Measured in CPU
+    // time of this thread and relative to the whole run, so that neither a
+    // loaded machine nor a sanitizer's slowdown moves it much: the longest
+    // stretch is now some 5% of the run (docs/limits.md has the latencies).
+    const BigBox box = big_box_scene(1'000'000);
+    SolveOptions options;
+    options.engine = Engine::induction;
+    LongestSilence monitor;
+    options.monitor = &monitor;
+    const double begin = thread_cpu_seconds();
+    const Answer answer = solve(box.scene, options);
+    monitor.note();
+    const double run = thread_cpu_seconds() - begin;
+    CHECK(answer.reason == Reason::cycle);
+    CHECK(answer.reflections == box.period);
+    CAPTURE(run, monitor.longest);
+    CHECK(monitor.longest < run / 4);
 }
 
 TEST_CASE("a --timeout while the scene's huge numbers are parsed stops the parse",

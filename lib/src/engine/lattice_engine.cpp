@@ -148,7 +148,8 @@ public:
         if (!options_.monitor) return advance(shoot, until);
         using Clock = std::chrono::steady_clock;
         constexpr double chunk_seconds = 0.01;
-        std::uint64_t chunk = 64;
+        // From 1: on 10^6-digit coordinates one reflection takes milliseconds.
+        std::uint64_t chunk = 1;
         while (true) {
             if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
                 answer_.limit = *limit;
@@ -179,6 +180,13 @@ public:
         const std::optional<Limit> limit = options_.monitor->poll(reflections_);
         if (limit) stop(*limit);
         return limit.has_value();
+    }
+
+    // Polls the monitor from inside a setup phase (lattice/setup_poll.hpp):
+    // at every unit on GMP integers, where one can take milliseconds, and
+    // every 64 units on machine integers, where one takes about a microsecond.
+    lattice::SetupPoll setup_poll() const {
+        return {options_.monitor, reflections_, std::is_same_v<Int, Integer> ? 1u : 64u};
     }
 
     std::uint64_t reflections() const { return reflections_; }
@@ -381,7 +389,8 @@ bool clustered(std::size_t fullest, std::size_t members, std::size_t cells) {
 template <class Int, int M, class Detector>
 Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const SolveOptions& options) {
     auto begin = std::chrono::steady_clock::now();
-    const shoot::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2);
+    const shoot::UniformGrid<Int, M> grid(ls, options.grid_density ? options.grid_density : 2,
+                                          run.setup_poll());
     Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = grid.cell_count();
@@ -413,8 +422,9 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         auto table = shoot::PieceTable<Int>::build(ls, grid,
                                                    options.engine == Engine::induction
                                                        ? induction::piece_cap(grid.size())
-                                                       : 64 * grid.size() + 1024);
-        if (table && ls.target_reachable) table->mark_target(grid, run.target());
+                                                       : 64 * grid.size() + 1024,
+                                                   run.setup_poll());
+        if (table && ls.target_reachable) table->mark_target(grid, run.target(), run.setup_poll());
         setup.seconds += seconds_since(begin);
         if (run.stopped_by_monitor()) return run.answer();
         if (table) {
@@ -434,8 +444,8 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                         : at_step_cost(induction_budget(table->size(), ls.magnitude), ls.magnitude);
                 if (run.advance_in_chunks(by_table, run.reflections() + budget))
                     return run.answer();
-                induction::Decision decision =
-                    induction::decide(ls, grid, *table, options, run.reflections());
+                induction::Decision decision = induction::decide(
+                    ls, grid, *table, options, run.reflections(), run.setup_poll());
                 if (decision.answer) {
                     decision.answer->stats.setup = setup;
                     return *decision.answer;
@@ -453,11 +463,13 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
     if (options.shooter == Shooter::bvh ||
         (options.shooter == Shooter::automatic &&
          clustered(grid.fullest_cell(), grid.size(), grid.cell_count())))
-        return build_and_finish(run, ShooterUsed::bvh,
-                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh, [&] {
+            return shoot::BoundingVolumeHierarchy<Int, M>(ls, run.setup_poll());
+        });
     if (options.shooter == Shooter::section)
-        return build_and_finish(run, ShooterUsed::section,
-                                [&] { return shoot::CrossSectionGrid<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::section, [&] {
+            return shoot::CrossSectionGrid<Int, M>(ls, 1, run.setup_poll());
+        });
     return finish_with(run, ShooterUsed::grid, grid);
 }
 
@@ -469,23 +481,26 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
     switch (options.shooter) {
     case Shooter::grid:
         return build_and_finish(run, ShooterUsed::grid, [&] {
-            return shoot::UniformGrid<Int, M>(ls, options.grid_density ? options.grid_density : 32);
+            return shoot::UniformGrid<Int, M>(ls, options.grid_density ? options.grid_density : 32,
+                                              run.setup_poll());
         });
     case Shooter::bvh:
-        return build_and_finish(run, ShooterUsed::bvh,
-                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh, [&] {
+            return shoot::BoundingVolumeHierarchy<Int, M>(ls, run.setup_poll());
+        });
     default:
         break;
     }
     auto begin = std::chrono::steady_clock::now();
-    const shoot::CrossSectionGrid<Int, M> section(ls);
+    const shoot::CrossSectionGrid<Int, M> section(ls, 1, run.setup_poll());
     Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = section.cell_count();
     if (options.shooter == Shooter::automatic &&
         clustered(section.fullest_cell(), section.member_count(), section.cell_count()))
-        return build_and_finish(run, ShooterUsed::bvh,
-                                [&] { return shoot::BoundingVolumeHierarchy<Int, M>(ls); });
+        return build_and_finish(run, ShooterUsed::bvh, [&] {
+            return shoot::BoundingVolumeHierarchy<Int, M>(ls, run.setup_poll());
+        });
     return finish_with(run, ShooterUsed::section, section);
 }
 
@@ -498,6 +513,11 @@ Answer run(const LatticeScene& ls, const SolveOptions& options) {
             return run_planar(run, ls, options);
         else
             return run_spatial(run, ls, options);
+    } catch (const lattice::SetupStopped& stopped) {
+        // Stopped inside a setup phase (a shooter, the tables, the
+        // exchange): the phase is dropped, the reflections taken stand.
+        run.stop(stopped.limit);
+        return run.answer();
     } catch (const std::bad_alloc&) {
         // Building a shooter (grid, tables, hierarchy) is what allocates;
         // the reflections performed before it are still exact.
@@ -531,7 +551,17 @@ Answer run_with_int(const LatticeScene& ls, const SolveOptions& options) {
 } // namespace
 
 Answer solve_on_lattice(const Scene& scene, const SolveOptions& options) {
-    const LatticeScene ls = lattice::make_lattice(scene);
+    LatticeScene ls;
+    try {
+        ls = lattice::make_lattice(scene, lattice::SetupPoll(options.monitor, 0));
+    } catch (const lattice::SetupStopped& stopped) {
+        // Stopped while scaling: no reflection taken, no arithmetic chosen yet.
+        Answer answer;
+        answer.engine = EngineUsed::lattice;
+        answer.reason = Reason::limit;
+        answer.limit = stopped.limit;
+        return answer;
+    }
     // The narrowest type the bound proves safe, unless a wider one is asked for.
     const bool fits64 = ls.magnitude < lattice::int64_limit();
     const bool fits128 = ls.magnitude < lattice::int128_limit();

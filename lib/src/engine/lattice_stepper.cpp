@@ -130,7 +130,7 @@ LatticeStepper::LatticeStepper(const Scene& scene) : scene_(scene) {
             return l->next(ray.start, ray.direction).has_value();
         });
         if (!held) {
-            lattices_.push_back(ray_lattice(lattice::make_lattice(scene, r)));
+            lattices_.push_back(ray_lattice(lattice::make_lattice(scene, {}, r)));
             cells_ += lattices_.back()->cells();
         }
     }

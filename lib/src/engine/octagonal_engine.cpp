@@ -71,7 +71,7 @@ public:
     // Steps to an answer or a limit, polling the monitor between chunks
     // sized from the last one's rate to take about 10 ms.
     Answer run() {
-        std::uint64_t chunk = 64;
+        std::uint64_t chunk = 1; // one reflection on huge numbers takes milliseconds
         while (true) {
             if (options_.monitor)
                 if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {

@@ -26,7 +26,8 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
-    std::uint64_t chunk_ = 64, done_ = 0;
+    // From 1: on 10^6-digit coordinates one step takes milliseconds.
+    std::uint64_t chunk_ = 1, done_ = 0;
     Clock::time_point begin_ = Clock::now();
 };
 

@@ -23,7 +23,7 @@ Integer w_intercept(int axis, const Integer& offset, unsigned negative) {
 } // namespace
 
 ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer (&x)[2],
-                               unsigned x_negative) {
+                               unsigned x_negative, const lattice::SetupPoll& poll) {
     struct Mirror {
         int axis;
         Integer offset, lo, hi;
@@ -32,6 +32,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
     std::vector<Mirror> mirrors;
     modulus_ = 0;
     for (std::uint32_t e = 0; e < scene.elements.size(); ++e) {
+        poll();
         const auto& element = scene.elements[e];
         if (element.absorber) continue;
         const int axis = element.axis;
@@ -61,6 +62,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
             group_of_segment.emplace_back(begin, end);
         };
         for (std::size_t i = begin; i < end;) {
+            poll();
             Integer lo = mirrors[i].lo, hi = mirrors[i].hi;
             std::size_t j = i + 1;
             for (; j < end && mirrors[j].lo <= hi; ++j)
@@ -90,6 +92,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
     // Owners: each position goes to the first mirror (by lo) containing it.
     owners_.resize(segments_.size());
     for (std::size_t s = 0; s < segments_.size(); ++s) {
+        poll();
         const Segment& segment = segments_[s];
         Integer covered = segment.lo - 1;
         for (std::size_t i = group_of_segment[s].first; i < group_of_segment[s].second; ++i) {
@@ -109,6 +112,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
     for (std::size_t s = 0; s < segments_.size(); ++s) {
         const Segment& segment = segments_[s];
         for (unsigned d = 0; d < 4; ++d) {
+            poll();
             Transversal t;
             t.axis = segment.axis;
             t.offset = segment.offset;
@@ -208,12 +212,14 @@ std::size_t isolate(std::vector<RawPiece>& pieces, const Integer& c) {
 IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
                                  std::vector<Transversal> transversals,
                                  std::vector<RawPiece> pieces, const Integer& raw_first,
-                                 const std::vector<Integer>& raw_hits) {
+                                 const std::vector<Integer>& raw_hits,
+                                 const lattice::SetupPoll& poll) {
     const Integer& n = size;
     std::sort(pieces.begin(), pieces.end(),
               [](const RawPiece& a, const RawPiece& b) { return a.start < b.start; });
     Integer at = 0;
     for (const RawPiece& p : pieces) {
+        poll();
         if (p.start != at) throw std::logic_error("the tables' pieces do not tile the states");
         at += p.length;
     }
@@ -225,12 +231,15 @@ IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
     // Close the holes: escaping and absorbed pieces, in domain order, onto
     // the states no piece maps to, in order.
     std::vector<std::pair<Integer, Integer>> images; // (start, length) of the reflecting ones
-    for (const RawPiece& p : pieces)
+    for (const RawPiece& p : pieces) {
+        poll(); // copies: on 10^5-digit numbers, much fresh memory
         if (p.kind == PieceKind::reflect) images.emplace_back(p.image, p.length);
+    }
     std::sort(images.begin(), images.end());
     std::vector<std::pair<Integer, Integer>> holes;
     at = 0;
     for (const auto& [start, length] : images) {
+        poll();
         if (start < at) throw std::logic_error("two states of the tables have one image");
         if (start > at) holes.emplace_back(at, start - at);
         at = start + length;
@@ -241,6 +250,7 @@ IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
     std::size_t hole = 0;
     Integer used = 0; // of the current hole
     for (RawPiece& p : pieces) {
+        poll();
         if (p.kind == PieceKind::reflect) {
             closed.push_back(std::move(p));
             continue;
@@ -273,6 +283,7 @@ IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
                                     [&](const RawPiece& p) { return p.start == raw_first; });
     std::rotate(closed.begin(), first, closed.end());
     for (RawPiece& p : closed) {
+        poll();
         ExchangePiece q;
         q.start = floor_mod(p.start - raw_first, n);
         q.image = floor_mod(p.image - raw_first, n);

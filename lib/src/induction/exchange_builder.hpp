@@ -40,7 +40,9 @@ using lattice::floor_mod;
 class ExchangeLayout {
 public:
     // x: the state after reflection 1, a lattice point and its direction.
-    ExchangeLayout(const lattice::LatticeScene& scene, const Integer (&x)[2], unsigned x_negative);
+    // `poll` is called once a mirror, segment and transversal.
+    ExchangeLayout(const lattice::LatticeScene& scene, const Integer (&x)[2], unsigned x_negative,
+                   const lattice::SetupPoll& poll = {});
 
     // The transversal and number of state (p, negative), if it is one.
     std::optional<std::pair<std::size_t, Integer>> locate(const Integer (&p)[2],
@@ -94,18 +96,21 @@ struct RawPiece {
 // Steps 3-5 on raw pieces that tile [0, N): split out x and the hit states,
 // close the holes, rotate.
 // `size` states, classes modulo `modulus`; the transversals go into the
-// result as they are.
+// result as they are. `poll` is called once a piece.
 IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
                                  std::vector<Transversal> transversals,
                                  std::vector<RawPiece> pieces, const Integer& raw_first,
-                                 const std::vector<Integer>& raw_hits);
+                                 const std::vector<Integer>& raw_hits,
+                                 const lattice::SetupPoll& poll = {});
 
+// `poll` is called once a piece (it may throw lattice::SetupStopped).
 template <class Int>
-IntervalExchange
-build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
-               const shoot::PieceTable<Int>& table, const Integer (&x)[2], unsigned x_negative) {
+IntervalExchange build_exchange(const lattice::LatticeScene& scene,
+                                const shoot::UniformGrid<Int, 2>& grid,
+                                const shoot::PieceTable<Int>& table, const Integer (&x)[2],
+                                unsigned x_negative, const lattice::SetupPoll& poll = {}) {
     using lattice::to_integer;
-    ExchangeLayout layout(scene, x, x_negative);
+    ExchangeLayout layout(scene, x, x_negative, poll);
     const Integer& g = layout.modulus();
     std::vector<RawPiece> raw;
 
@@ -127,6 +132,7 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
     // class) all follow `piece`: one raw piece.
     auto add = [&](const Transversal& t, const Integer& first, const Integer& last,
                    const typename shoot::PieceTable<Int>::Piece& table_piece) {
+        poll();
         const Integer a = number_of(t, g, first);
         const Integer b = number_of(t, g, last);
         RawPiece piece;
@@ -157,6 +163,7 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
         for (const auto& owner : layout.owners(id)) {
             const auto pieces = table.pieces(owner.element, t.negative);
             for (std::size_t i = 0; i < pieces.size(); ++i) {
+                poll();
                 Integer lo = to_integer(pieces[i].from);
                 Integer hi = i + 1 < pieces.size() ? Integer(to_integer(pieces[i + 1].from) - 1)
                                                    : Integer(t.hi);
@@ -188,6 +195,7 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
         for (int j = 0; j < 2; ++j) p[j] = lattice::from_integer<Int>(scene.target[j]);
         const Integer target[2] = {scene.target[0], scene.target[1]};
         for (unsigned d = 0; d < 4; ++d) {
+            poll();
             // A segment also passes its own first point: states on the target.
             if (const auto at = layout.locate(target, d)) hits.push_back(layout.raw(*at));
             const shoot::Shot<Int> back = grid.shoot(p, d ^ 3u);
@@ -207,7 +215,7 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
     const Integer raw_first = layout.raw(*first);
     IntervalExchange exchange =
         finish_exchange(layout.size(), layout.modulus(), std::move(layout.transversals()),
-                        std::move(raw), raw_first, hits);
+                        std::move(raw), raw_first, hits, poll);
     exchange.first_transversal = first->first;
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];
@@ -219,7 +227,8 @@ build_exchange(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int,
 template <class Int>
 std::optional<IntervalExchange> build_exchange_from_start(const lattice::LatticeScene& scene,
                                                           const shoot::UniformGrid<Int, 2>& grid,
-                                                          const shoot::PieceTable<Int>& table) {
+                                                          const shoot::PieceTable<Int>& table,
+                                                          const lattice::SetupPoll& poll = {}) {
     Int start[2];
     for (int j = 0; j < 2; ++j) start[j] = lattice::from_integer<Int>(scene.start[j]);
     const shoot::Shot<Int> first = grid.shoot(start, scene.start_direction);
@@ -229,7 +238,7 @@ std::optional<IntervalExchange> build_exchange_from_start(const lattice::Lattice
         x[j] = scene.start[j] + (((scene.start_direction >> j) & 1u)
                                      ? Integer(-lattice::to_integer(first.t))
                                      : lattice::to_integer(first.t));
-    return build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip);
+    return build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip, poll);
 }
 
 } // namespace orthoray::induction

@@ -29,13 +29,13 @@ void set_outcome(Answer& answer, const InducedOrbit& orbit) {
 template <class Int>
 Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
                 const shoot::PieceTable<Int>& table, const SolveOptions& options,
-                std::uint64_t reflections) {
+                std::uint64_t reflections, const lattice::SetupPoll& poll) {
     using Clock = std::chrono::steady_clock;
     const auto begin = Clock::now();
     Decision decision;
     // The run has taken reflection 1, so the first shot neither escapes nor
     // is absorbed: the exchange is there.
-    const IntervalExchange exchange = *build_exchange_from_start(scene, grid, table);
+    const IntervalExchange exchange = *build_exchange_from_start(scene, grid, table, poll);
 
     auto stop = [&](std::uint64_t) {
         if (!options.monitor) return false;
@@ -75,14 +75,15 @@ Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int
 template Decision decide<std::int64_t>(const lattice::LatticeScene&,
                                        const shoot::UniformGrid<std::int64_t, 2>&,
                                        const shoot::PieceTable<std::int64_t>&, const SolveOptions&,
-                                       std::uint64_t);
+                                       std::uint64_t, const lattice::SetupPoll&);
 template Decision decide<lattice::int128_t>(const lattice::LatticeScene&,
                                             const shoot::UniformGrid<lattice::int128_t, 2>&,
                                             const shoot::PieceTable<lattice::int128_t>&,
-                                            const SolveOptions&, std::uint64_t);
+                                            const SolveOptions&, std::uint64_t,
+                                            const lattice::SetupPoll&);
 template Decision decide<Integer>(const lattice::LatticeScene&,
                                   const shoot::UniformGrid<Integer, 2>&,
                                   const shoot::PieceTable<Integer>&, const SolveOptions&,
-                                  std::uint64_t);
+                                  std::uint64_t, const lattice::SetupPoll&);
 
 } // namespace orthoray::induction

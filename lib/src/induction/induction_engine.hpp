@@ -37,9 +37,11 @@ struct Decision {
 // Decides the run whose first reflection has been taken (`reflections` so
 // far, for the monitor). No answer and no limit means the answer needs more
 // reflections than options.max_steps allows: the caller simulates up to it.
+// `poll` polls the monitor while the exchange is built; it throws
+// lattice::SetupStopped, which the caller catches.
 template <class Int>
 Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
                 const shoot::PieceTable<Int>& table, const SolveOptions& options,
-                std::uint64_t reflections);
+                std::uint64_t reflections, const lattice::SetupPoll& poll);
 
 } // namespace orthoray::induction

@@ -89,6 +89,17 @@ inline std::int64_t to_index(const Integer& x) {
     return x.get_si();
 }
 
+// The number of bits of x > 0: floor(log2 x) + 1.
+template <class Int>
+unsigned bit_length(Int x) {
+    unsigned bits = 0;
+    for (; x > 0; x >>= 1) ++bits; // at most 127 rounds on machine integers
+    return bits;
+}
+inline unsigned bit_length(const Integer& x) {
+    return static_cast<unsigned>(mpz_sizeinbase(x.get_mpz_t(), 2));
+}
+
 inline ArithmeticUsed arithmetic_used(std::int64_t) {
     return ArithmeticUsed::int64;
 }

@@ -13,7 +13,7 @@ Integer abs_of(const Integer& a) {
 
 } // namespace
 
-LatticeScene make_lattice(const Scene& scene, std::size_t ray_index) {
+LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t ray_index) {
     LatticeScene out;
     out.scene = &scene;
     const Ray& ray = scene.rays.at(ray_index);
@@ -54,6 +54,7 @@ LatticeScene make_lattice(const Scene& scene, std::size_t ray_index) {
     take_denominators(ray.start);
     take_denominators(scene.target());
     for (const Element& e : scene.elements) {
+        poll();
         if (!spans_start(e)) continue;
         take_denominators(e.lo);
         take_denominators(e.hi);
@@ -79,6 +80,7 @@ LatticeScene make_lattice(const Scene& scene, std::size_t ray_index) {
         for (int i = 0; i < out.dim; ++i) track(out.target[i]);
     out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
+        poll();
         if (!spans_start(e)) continue;
         LatticeElement le;
         le.source = static_cast<std::uint32_t>(&e - scene.elements.data());

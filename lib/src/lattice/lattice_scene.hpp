@@ -14,6 +14,7 @@
 // M-dimensional problem, M = number of nonzero direction components.
 #pragma once
 
+#include "lattice/setup_poll.hpp"
 #include "orthoray/scene.hpp"
 
 #include <array>
@@ -62,7 +63,9 @@ struct LatticeScene {
 };
 
 // The lattice of ray number `ray_index` (from 0) of the scene; its
-// `target` and `target_reachable` are the first target's.
-LatticeScene make_lattice(const Scene& scene, std::size_t ray_index = 0);
+// `target` and `target_reachable` are the first target's. `poll` is called
+// once an element (SetupPoll: it may throw SetupStopped).
+LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll = {},
+                          std::size_t ray_index = 0);
 
 } // namespace orthoray::lattice

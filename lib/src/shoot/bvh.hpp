@@ -44,7 +44,10 @@ namespace orthoray::shoot {
 template <class Int, int M>
 class BoundingVolumeHierarchy {
 public:
-    explicit BoundingVolumeHierarchy(const LatticeScene& scene);
+    // `poll` is called once an element and a node, and on GMP integers once
+    // an element of a node (it may throw lattice::SetupStopped).
+    explicit BoundingVolumeHierarchy(const LatticeScene& scene,
+                                     const lattice::SetupPoll& poll = {});
 
     // `negative` bit i set: the ray moves towards -infinity on axis i.
     // Same contract as UniformGrid::shoot.
@@ -82,10 +85,10 @@ private:
     static constexpr int stack_size = 64;
 
     static void plant(Tree& tree, const std::vector<Item>& items, const std::vector<Int>& centre,
-                      std::vector<std::uint32_t> order);
+                      std::vector<std::uint32_t> order, const lattice::SetupPoll& poll);
     static std::uint32_t build(Tree& tree, std::vector<std::uint32_t>& order, std::uint32_t begin,
                                std::uint32_t end, const std::vector<Item>& items,
-                               const std::vector<Int>& centre);
+                               const std::vector<Int>& centre, const lattice::SetupPoll& poll);
 
     // The ray's parameter interval in a closed box: [enter, leave].
     template <unsigned Negative>
@@ -113,7 +116,8 @@ private:
 };
 
 template <class Int, int M>
-BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& scene) {
+BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& scene,
+                                                         const lattice::SetupPoll& poll) {
     const std::size_t n = scene.elements.size();
     elements_ = n;
     if (n == 0) return;
@@ -121,13 +125,14 @@ BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& sce
     items.reserve(n);
     std::vector<Int> centre(n * M); // lo + hi per element and axis: twice the centre
     for (std::size_t k = 0; k < n; ++k) {
+        poll();
         const Item& it = items.emplace_back(scene.elements[k], static_cast<std::uint32_t>(k));
         for (int j = 0; j < M; ++j) centre[k * M + j] = Int(it.lo[j] + it.hi[j]);
     }
     if (!scene.one_sided) {
         std::vector<std::uint32_t> order(n);
         std::iota(order.begin(), order.end(), 0u);
-        plant(trees_.emplace_back(), items, centre, std::move(order));
+        plant(trees_.emplace_back(), items, centre, std::move(order), poll);
         return;
     }
     for (unsigned d = 0; d < (1u << M); ++d) {
@@ -135,7 +140,7 @@ BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& sce
         for (std::uint32_t k = 0; k < n; ++k)
             if (items[k].acts_on(d)) order.push_back(k);
         tree_of_[d] = static_cast<unsigned>(trees_.size());
-        plant(trees_.emplace_back(), items, centre, std::move(order));
+        plant(trees_.emplace_back(), items, centre, std::move(order), poll);
     }
 }
 
@@ -143,11 +148,12 @@ BoundingVolumeHierarchy<Int, M>::BoundingVolumeHierarchy(const LatticeScene& sce
 template <class Int, int M>
 void BoundingVolumeHierarchy<Int, M>::plant(Tree& tree, const std::vector<Item>& items,
                                             const std::vector<Int>& centre,
-                                            std::vector<std::uint32_t> order) {
+                                            std::vector<std::uint32_t> order,
+                                            const lattice::SetupPoll& poll) {
     const std::size_t n = order.size();
     if (n == 0) return;
     tree.nodes.reserve(2 * ((n + leaf_size - 1) / leaf_size));
-    build(tree, order, 0, static_cast<std::uint32_t>(n), items, centre);
+    build(tree, order, 0, static_cast<std::uint32_t>(n), items, centre, poll);
     tree.items.reserve(n);
     for (std::uint32_t k : order) tree.items.push_back(items[k]);
 }
@@ -157,7 +163,9 @@ template <class Int, int M>
 std::uint32_t BoundingVolumeHierarchy<Int, M>::build(Tree& tree, std::vector<std::uint32_t>& order,
                                                      std::uint32_t begin, std::uint32_t end,
                                                      const std::vector<Item>& items,
-                                                     const std::vector<Int>& centre) {
+                                                     const std::vector<Int>& centre,
+                                                     const lattice::SetupPoll& poll) {
+    poll();
     std::vector<Node>& nodes = tree.nodes;
     const auto self = static_cast<std::uint32_t>(nodes.size());
     nodes.emplace_back();
@@ -169,6 +177,7 @@ std::uint32_t BoundingVolumeHierarchy<Int, M>::build(Tree& tree, std::vector<std
             node.hi[j] = head.hi[j];
         }
         for (std::uint32_t k = begin + 1; k < end; ++k) {
+            poll.on_gmp<Int>();
             const Item& it = items[order[k]];
             for (int j = 0; j < M; ++j) {
                 if (it.lo[j] < node.lo[j]) node.lo[j] = it.lo[j];
@@ -195,8 +204,8 @@ std::uint32_t BoundingVolumeHierarchy<Int, M>::build(Tree& tree, std::vector<std
                      [&](std::uint32_t a, std::uint32_t b) {
                          return centre[a * M + axis] < centre[b * M + axis];
                      });
-    build(tree, order, begin, mid, items, centre); // the left child is self + 1
-    const std::uint32_t right = build(tree, order, mid, end, items, centre);
+    build(tree, order, begin, mid, items, centre, poll); // the left child is self + 1
+    const std::uint32_t right = build(tree, order, mid, end, items, centre, poll);
     nodes[self].first = right; // nodes may have grown: index again
     nodes[self].count = 0;
     return self;

@@ -56,7 +56,10 @@ public:
     // About `cells_per_element` cells for each element in each direction's
     // cross-section: more cells mean shorter member lists but more
     // registrations (an element is listed in every cell its shadow covers).
-    explicit CrossSectionGrid(const LatticeScene& scene, std::int64_t cells_per_element = 1);
+    // `poll` is called once an element in each pass (it may throw
+    // lattice::SetupStopped).
+    explicit CrossSectionGrid(const LatticeScene& scene, std::int64_t cells_per_element = 1,
+                              const lattice::SetupPoll& poll = {});
 
     // Same contract as UniformGrid::shoot: the first elements met at t > 0.
     Shot<Int> shoot(const Int (&p)[M], unsigned negative) const;
@@ -121,15 +124,19 @@ private:
         return Int(1 - 2 * static_cast<int>((negative >> j) & 1u));
     }
 
-    void build(Bundle& bundle, unsigned negative, std::int64_t cells_per_element);
+    void build(Bundle& bundle, unsigned negative, std::int64_t cells_per_element,
+               const lattice::SetupPoll& poll);
 };
 
 template <class Int, int M, class Counter>
 CrossSectionGrid<Int, M, Counter>::CrossSectionGrid(const LatticeScene& scene,
-                                                    std::int64_t cells_per_element) {
+                                                    std::int64_t cells_per_element,
+                                                    const lattice::SetupPoll& poll) {
     items_.reserve(scene.elements.size());
-    for (const LatticeElement& e : scene.elements)
+    for (const LatticeElement& e : scene.elements) {
+        poll();
         items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
+    }
     // Elements in Z-order of their low corners: a cell's members, and the
     // ray's successive hits, are spatial neighbours, so they then share cache
     // lines instead of being scattered over the scene's declaration order.
@@ -147,6 +154,7 @@ CrossSectionGrid<Int, M, Counter>::CrossSectionGrid(const LatticeScene& scene,
         }
         std::vector<std::pair<std::uint64_t, std::uint32_t>> order(items_.size());
         for (std::uint32_t e = 0; e < items_.size(); ++e) {
+            poll();
             std::uint64_t key = 0;
             for (int j = 0; j < M; ++j) {
                 // floor((lo - min) * 2^bits / extent) < 2^bits, exactly.
@@ -163,12 +171,13 @@ CrossSectionGrid<Int, M, Counter>::CrossSectionGrid(const LatticeScene& scene,
         items_ = std::move(sorted);
     }
     for (unsigned negative = 0; negative < bundles_.size(); ++negative)
-        build(bundles_[negative], negative, cells_per_element);
+        build(bundles_[negative], negative, cells_per_element, poll);
 }
 
 template <class Int, int M, class Counter>
 void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
-                                              std::int64_t cells_per_element) {
+                                              std::int64_t cells_per_element,
+                                              const lattice::SetupPoll& poll) {
     bundle.offsets.assign(2, 0);
     // The elements this direction's rays can meet: those acting on it.
     std::vector<std::uint32_t> acting;
@@ -188,6 +197,7 @@ void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
     };
     for (int j = 0; j < S; ++j)
         for (std::size_t k = 0; k < acting.size(); ++k) {
+            poll();
             Int lo, hi;
             shadow(items_[acting[k]], j + 1, lo, hi);
             if (k == 0 || lo < bundle.origin[j]) bundle.origin[j] = lo;
@@ -208,7 +218,14 @@ void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
         bundle.reach = 0;
         for (int j = 0; j < S; ++j) {
             const Int points = bundle.limit[j] - bundle.origin[j] + 1;
-            unsigned shift = 0;
+            // The least shift with k 2^shift >= points. Below bits(points) -
+            // bits(k) it is too small (k 2^shift < 2^(bits(points) - 1)), so
+            // the search starts there: one or two rounds, where counting up
+            // from 0 took one round a bit, each on a number of that many
+            // bits (minutes at 10^6 digits).
+            const unsigned points_bits = lattice::bit_length(points);
+            const unsigned k_bits = lattice::bit_length(Int(k));
+            unsigned shift = points_bits > k_bits ? points_bits - k_bits : 0;
             while (Int(Int(k) << shift) < points) ++shift;
             bundle.shift[j] = shift;
             bundle.cells[j] = to_index(Int(Int(points - 1) >> shift)) + 1;
@@ -221,6 +238,7 @@ void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
     // Every cell an element's shadow box covers, with the element's smallest
     // possible depth there.
     auto for_each_cell = [&](std::uint32_t e, auto&& visit) {
+        poll();
         const Item& it = items_[e];
         std::int64_t first[M], last[M], i[M];
         for (int j = 0; j < S; ++j) {
@@ -256,6 +274,7 @@ void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
         }
     };
     for (const std::uint32_t e : acting) {
+        poll();
         const Item& it = items_[e];
         const Int d = s0 * it.lo[0] < s0 * it.hi[0] ? Int(s0 * it.hi[0]) : Int(s0 * it.lo[0]);
         if (bundle.far < d) bundle.far = d;

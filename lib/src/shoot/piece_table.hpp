@@ -78,8 +78,11 @@ public:
 
     // std::nullopt when the tables would need more than max_pieces pieces
     // (many crossings can make them quadratic in the number of mirrors).
+    // `poll` is called once an element, an event and a slot, and on GMP
+    // integers once a piece (it may throw lattice::SetupStopped).
     static std::optional<PieceTable> build(const LatticeScene& scene,
-                                           const UniformGrid<Int, 2>& grid, std::size_t max_pieces);
+                                           const UniformGrid<Int, 2>& grid, std::size_t max_pieces,
+                                           const lattice::SetupPoll& poll = {});
 
     // The pieces of mirror `element` for leaving it in direction `negative`
     // (bit i set: moving towards -infinity on axis i), sorted by `from`.
@@ -127,7 +130,8 @@ public:
     // direction d starts where a shot from the target in direction -d first
     // meets the mirrors, so at most four points on a few mirrors. Every
     // other piece's segments miss the target, and Shot::near_target says so.
-    void mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]);
+    void mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2],
+                     const lattice::SetupPoll& poll = {});
 
     // A piece as the dump shows it: on mirror `element` leaving in direction
     // `negative`, the positions from `from` on (to the next row's) go to
@@ -188,9 +192,9 @@ private:
 };
 
 template <class Int>
-std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
-                                                      const UniformGrid<Int, 2>& grid,
-                                                      std::size_t max_pieces) {
+std::optional<PieceTable<Int>>
+PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& grid,
+                       std::size_t max_pieces, const lattice::SetupPoll& poll) {
     const auto& elements = scene.elements;
     const std::uint32_t n = static_cast<std::uint32_t>(elements.size());
     struct Box {
@@ -201,6 +205,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
     };
     std::vector<Box> box(n);
     for (std::uint32_t e = 0; e < n; ++e) {
+        poll();
         for (int j = 0; j < 2; ++j) {
             box[e].lo[j] = from_integer<Int>(elements[e].lo[j]);
             box[e].hi[j] = from_integer<Int>(elements[e].hi[j]);
@@ -222,6 +227,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         events.push_back(p);
     }
     for (std::uint32_t e = 0; e < n; ++e) {
+        poll();
         if (box[e].axis != 0) continue;
         grid.for_each_neighbour(e, [&](std::uint32_t f) {
             const Box &v = box[e], &h = box[f];
@@ -237,6 +243,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         std::vector<std::pair<std::uint64_t, Point>> keyed;
         keyed.reserve(events.size());
         for (const Point& p : events) {
+            poll();
             const Int q[2] = {p[0], p[1]};
             keyed.emplace_back(grid.locality_key(q), p);
         }
@@ -277,12 +284,14 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
                 breaks.push_back(Break{m * 4 + d, event, p[table.tangent_[m]]});
         });
     };
-    for (std::uint32_t m = 0; m < n; ++m)
+    for (std::uint32_t m = 0; m < n; ++m) {
+        poll();
         for (unsigned d = 0; d < 4; ++d) {
             const int t = table.tangent_[m];
             breaks.push_back(Break{m * 4 + d, no_event, box[m].lo[t]});
             breaks.push_back(Break{m * 4 + d, no_event, box[m].hi[t]});
         }
+    }
     // Whether some element at p acts on direction d (always, without
     // one-sided elements).
     auto acted_on_at = [&](const Int(&p)[2], unsigned d) {
@@ -294,6 +303,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         return acted;
     };
     for (std::uint32_t e = 0; e < events.size(); ++e) {
+        poll();
         const Int p[2] = {events[e][0], events[e][1]};
         add_breaks_at(p, 0, 3, no_event);
         for (unsigned d = 0; d < 4; ++d) {
@@ -334,6 +344,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
         // structured binding in the lambdas below.
         const auto m = ordered.second;
         for (unsigned d = 0; d < 4; ++d) {
+            poll();
             const std::uint32_t slot = m * 4 + d;
             Cursor& range = table.slots_[slot];
             range.begin = static_cast<std::uint32_t>(table.pieces_.size());
@@ -345,6 +356,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const LatticeScene& scene,
             const int tangent = table.tangent_[m];
             const std::size_t first = table.pieces_.size();
             auto resolve = [&](const Int& u, std::uint32_t event) {
+                poll.on_gmp<Int>(); // a slot may have thousands of pieces
                 Shot<Int> s;
                 if (event == no_event) {
                     Int p[2] = {box[m].lo[0], box[m].lo[1]};
@@ -429,9 +441,11 @@ void PieceTable<Int>::walk_back(const UniformGrid<Int, 2>& grid, const Int (&p)[
 }
 
 template <class Int>
-void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2]) {
+void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2],
+                                  const lattice::SetupPoll& poll) {
     for (unsigned d = 0; d < 4; ++d)
         walk_back(grid, target, d, [&](const Int(&q)[2]) {
+            poll();
             bool acted = false;
             grid.for_each_element_at(q, [&](std::uint32_t m) {
                 if ((acting_[m] >> d) & 1u) acted = true;

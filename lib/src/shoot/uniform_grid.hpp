@@ -24,6 +24,7 @@
 
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
+#include "lattice/setup_poll.hpp"
 #include "shoot/element_box.hpp"
 #include "shoot/shot_counter.hpp"
 
@@ -75,9 +76,10 @@ class UniformGrid {
 public:
     // About `cells_per_element` cells for every `per_elements` elements: more
     // cells mean fewer elements tested per cell but more cell walls crossed
-    // per shot (docs/average-case.md derives the trade-off).
+    // per shot (docs/average-case.md derives the trade-off). `poll` is called
+    // once an element in each pass (it may throw lattice::SetupStopped).
     explicit UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element = 2,
-                         std::int64_t per_elements = 1);
+                         const lattice::SetupPoll& poll = {}, std::int64_t per_elements = 1);
 
     // `negative` bit i set: the ray moves towards -infinity on axis i.
     // Only elements that act on that direction are met.
@@ -180,10 +182,13 @@ private:
 
 template <class Int, int M, class Counter>
 UniformGrid<Int, M, Counter>::UniformGrid(const LatticeScene& scene, std::int64_t cells_per_element,
+                                          const lattice::SetupPoll& poll,
                                           std::int64_t per_elements) {
     items_.reserve(scene.elements.size());
-    for (const LatticeElement& e : scene.elements)
+    for (const LatticeElement& e : scene.elements) {
+        poll();
         items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
+    }
     if (items_.empty()) {
         offsets_.assign(1, 0);
         return;
@@ -224,17 +229,21 @@ UniformGrid<Int, M, Counter>::UniformGrid(const LatticeScene& scene, std::int64_
     };
     offsets_.assign(static_cast<std::size_t>(lists * total) + 1, 0);
     for (std::int64_t list = 0; list < lists; ++list)
-        for (const Item& it : items_)
+        for (const Item& it : items_) {
+            poll();
             if (in_list(it, list))
                 for_each_cell(it, [&](std::int64_t c) { ++offsets_[list * total + c + 1]; });
+        }
     for (std::size_t c = 1; c < offsets_.size(); ++c) offsets_[c] += offsets_[c - 1];
     members_.resize(offsets_.back());
     std::vector<std::uint32_t> fill(offsets_.begin(), offsets_.end() - 1);
     for (std::int64_t list = 0; list < lists; ++list)
-        for (std::uint32_t e = 0; e < items_.size(); ++e)
+        for (std::uint32_t e = 0; e < items_.size(); ++e) {
+            poll();
             if (in_list(items_[e], list))
                 for_each_cell(items_[e],
                               [&](std::int64_t c) { members_[fill[list * total + c]++] = e; });
+        }
 }
 
 template <class Int, int M, class Counter>
