@@ -140,6 +140,11 @@ TEST_CASE("puzzle generate on the command line", "[puzzle][generate][cli]") {
     CHECK(medium.out.find(" --difficulty medium --seed 3: one solution, difficulty medium (") !=
           std::string::npos);
     CHECK(run_cli("puzzle generate --difficulty insane").status == 2);
+    CHECK(run_cli("puzzle generate --max-nodes 0").status == 2);
+    const CliResult budget =
+        run_cli("puzzle generate --size 4x4 --blocks A2,C1 --seed 2 --max-nodes 20000");
+    CHECK(budget.status == 0);
+    CHECK(budget.out.find(" --max-nodes 20000 --seed 2: ") != std::string::npos);
 
     const CliResult bad = run_cli("puzzle generate --size 0x3");
     CHECK(bad.status == 2);

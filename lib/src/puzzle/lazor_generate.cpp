@@ -157,10 +157,9 @@ public:
         return true;
     }
 
-    // The points so far, then the lit points that depend on the most blocks
-    // (ties in random order), `count` in all, in row-major order; empty when
-    // the lasers pass too few points.
-    std::vector<LazorPoint> finish() {
+    // Adds the lit points that depend on the most blocks (ties in random
+    // order) until there are `total`; false when the lasers pass too few.
+    bool fill_to(int total) {
         std::vector<std::size_t> rest;
         for (std::size_t i = 0; i < all_.size(); ++i)
             if (lit_[i] && !taken(i)) rest.push_back(i);
@@ -168,15 +167,11 @@ public:
         std::stable_sort(rest.begin(), rest.end(), [&](std::size_t a, std::size_t b) {
             return witnesses_[a].size() > witnesses_[b].size();
         });
-        std::vector<std::size_t> points = chosen_;
-        for (std::size_t i = 0; static_cast<int>(points.size()) < count_; ++i) {
-            if (i == rest.size()) return {};
-            points.push_back(rest[i]);
+        for (std::size_t i = 0; static_cast<int>(chosen_.size()) < total; ++i) {
+            if (i == rest.size()) return false;
+            chosen_.push_back(rest[i]);
         }
-        std::sort(points.begin(), points.end());
-        std::vector<LazorPoint> out;
-        for (const std::size_t i : points) out.push_back(all_[i]);
-        return out;
+        return true;
     }
 
     std::vector<LazorPoint> chosen() const {
@@ -312,10 +307,8 @@ std::optional<LazorGenerated> generate_lazor_level(const LazorGenerateOptions& o
         if (!chooser.witness_blocks()) continue;
         if (options.unique && !cut_other_solutions(level, placed, chooser, options.max_nodes))
             continue;
-        const std::vector<LazorPoint> points = chooser.finish();
-        if (points.empty()) continue;
-        level.points = points;
-        placed.points = points;
+        if (!chooser.fill_to(options.points)) continue;
+        level.points = placed.points = chooser.chosen();
 
         LazorSolveOptions check;
         check.all = true;
