@@ -8,11 +8,15 @@
 # their solutions (the difficulty, from the level's first line), and the
 # median share of closed ('x') cells.
 #
-#   bench/puzzle_generate.sh [BUILD_DIR] [SEEDS] [LIMIT]
+#   bench/puzzle_generate.sh [BUILD_DIR] [SEEDS] [LIMIT] [MAX_NODES] ["SIZE BLOCKS LASERS POINTS"...]
+#
+# MAX_NODES is puzzle generate's --max-nodes (default 50000); configurations
+# given after it replace the default list below.
 set -euo pipefail
 build=${1:-build}
 seeds=${2:-5}
 limit=${3:-20}
+max_nodes=${4:-50000}
 bin="$build/orthoray"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -30,6 +34,7 @@ configs=(
     "6x6 A3,C1 1 8" "8x8 A5,C1 1 10" "10x10 A6,C2 1 14"
     "5x5 A2,B1 2 6" "6x6 A3,B1 2 8" "8x8 A4,B2 3 12"
 )
+if [ $# -gt 4 ]; then configs=("${@:5}"); fi
 echo "| size | blocks | lasers | points | unique levels | median time | median nodes | most nodes | closed cells |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for config in "${configs[@]}"; do
@@ -41,7 +46,7 @@ for config in "${configs[@]}"; do
     for seed in $(seq 1 "$seeds"); do
         begin=$(date +%s.%N)
         if "$bin" puzzle generate --size "$size" --blocks "$blocks" --lasers "$lasers" \
-            --points "$points" --seed "$seed" --timeout "$limit" -o "$work/level.bff" \
+            --points "$points" --seed "$seed" --timeout "$limit" --max-nodes "$max_nodes" -o "$work/level.bff" \
             >/dev/null 2>&1; then
             end=$(date +%s.%N)
             ok=$((ok + 1))
