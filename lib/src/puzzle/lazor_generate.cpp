@@ -174,6 +174,7 @@ public:
         return true;
     }
 
+    // The points chosen so far, in row-major order.
     std::vector<LazorPoint> chosen() const {
         std::vector<std::size_t> points = chosen_;
         std::sort(points.begin(), points.end());
