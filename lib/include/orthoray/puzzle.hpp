@@ -10,9 +10,11 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace orthoray {
@@ -121,15 +123,28 @@ struct LazorGenerateOptions {
     bool unique = true;                 // only levels with exactly one solution
     std::uint64_t seed = 1;             // the same level for the same options
     int attempts = 500;                 // placements tried before giving up
-    std::uint64_t max_nodes = 50'000;   // search nodes to count one candidate's solutions
+    // Search nodes for each search on a candidate: each search for another
+    // solution, and the final count of its solutions.
+    std::uint64_t max_nodes = 50'000;
+    // Only levels whose count of solutions (the solver, --all) takes from
+    // first to second search nodes, both included: the difficulty.
+    std::pair<std::uint64_t, std::uint64_t> difficulty{0,
+                                                       std::numeric_limits<std::uint64_t>::max()};
 };
 
 struct LazorGenerated {
     LazorLevel level;        // the blocks to place, lasers and points
     LazorLevel solution;     // the same with the blocks placed
     int attempts = 0;        // candidates built, this one included
-    std::uint64_t nodes = 0; // search nodes to count its solutions: a measure of difficulty
+    std::uint64_t nodes = 0; // search nodes to count its solutions: its difficulty
 };
+
+// The difficulty bands of docs/puzzles.md ("Generation"), in search nodes to
+// count a level's solutions: easy (up to 99), medium (100 to 999), hard
+// (1000 and more). Nothing for another name.
+std::optional<std::pair<std::uint64_t, std::uint64_t>> lazor_difficulty_band(std::string_view name);
+// The band `nodes` falls in.
+std::string lazor_difficulty_name(std::uint64_t nodes);
 
 // A level whose points the intended placement lights (and, with `unique`,
 // no other placement does, as the solver's count proves). Nothing when no

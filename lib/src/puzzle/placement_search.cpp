@@ -75,6 +75,7 @@ void PlacementSearch::explore() {
     ++result_.nodes;
     const Branches branches = expand();
     if (branches.solution) {
+        if (skip_ && skip_(board_)) return;
         if (!result_.first) result_.first = board_;
         if (count_all_) result_.solutions += arrangements(board_);
         return;

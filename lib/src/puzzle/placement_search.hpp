@@ -54,6 +54,10 @@ public:
     // count_all to its end.
     SubtreeResult search(const std::vector<Decision>& path);
 
+    // Solution leaves for which `skip` says true are passed over as if they
+    // lit nothing (the generator looks for a solution other than its own).
+    void skip_solutions(std::function<bool(const Board&)> skip) { skip_ = std::move(skip); }
+
 private:
     struct Branches {
         std::array<Decision, 4> decisions;
@@ -68,6 +72,7 @@ private:
     const LazorLevel& level_;
     bool count_all_;
     std::function<bool()> stop_;
+    std::function<bool(const Board&)> skip_;
     BeamWalk walk_;
     Board board_;
     SubtreeResult result_;
