@@ -101,17 +101,21 @@ int main(int argc, char** argv) {
     app.add_option("--brute-cap", cap, "seconds before brute force gives up")
         ->capture_default_str();
     app.add_option("--csv", csv, "also write the rows to this CSV file");
+    fs::path folder = fs::path(ORTHORAY_BENCH_DIR) / ".." / ".." / "shared" / "puzzles" / "lazor";
+    app.add_option("--levels", folder,
+                   "the .bff levels to time (and those in its unsolvable/, if any); "
+                   "default: the public levels")
+        ->capture_default_str();
     orthoray::bench::parse_options(app, "puzzle_bench", argc, argv);
-    const fs::path folder =
-        fs::path(ORTHORAY_BENCH_DIR) / ".." / ".." / "shared" / "puzzles" / "lazor";
     if (!fs::is_directory(folder)) {
         std::fprintf(stderr, "puzzle_bench: %s is absent\n", folder.string().c_str());
         return 2;
     }
     std::vector<fs::path> files;
     for (const auto& sub : {folder, folder / "unsolvable"})
-        for (const auto& e : fs::directory_iterator(sub))
-            if (e.path().extension() == ".bff") files.push_back(e.path());
+        if (fs::is_directory(sub))
+            for (const auto& e : fs::directory_iterator(sub))
+                if (e.path().extension() == ".bff") files.push_back(e.path());
     std::sort(files.begin(), files.end());
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
 
