@@ -194,6 +194,30 @@ TEST_CASE("a stop at any poll of the setup on huge numbers ends the run cleanly"
     check_stops_at_each_poll(box.scene, options, whole, never.polls);
 }
 
+TEST_CASE("the illumination search polls while it builds its lattices on huge numbers",
+          "[stop_requests]") {
+    // A second target, on the first segment, makes it the illumination
+    // question; the lattice stepper's scaling and grid poll once an element.
+    BigBox box = big_box_scene(100'000);
+    box.scene.targets.push_back(Vector{1, 1, 0});
+    SolveOptions options;
+    options.max_steps = 1;
+    StopAtPoll never(0);
+    options.monitor = &never;
+    const Answer whole = solve(box.scene, options);
+    REQUIRE(whole.illumination());
+    CHECK(whole.limit == Limit::steps);
+    CHECK(whole.targets[1].status == TargetAnswer::Status::lit);
+    CHECK(never.polls >= 2);
+    // Stopped at its first poll, inside the setup: nothing is proven yet.
+    StopAtPoll first(1);
+    options.monitor = &first;
+    const Answer stopped = solve(box.scene, options);
+    CHECK(stopped.reason == Reason::limit);
+    CHECK(stopped.limit == Limit::interrupt);
+    for (const TargetAnswer& t : stopped.targets) CHECK(t.status == TargetAnswer::Status::unknown);
+}
+
 TEST_CASE("in 3D too a stop at any poll of the setup on huge numbers ends the run cleanly",
           "[stop_requests][slow]") {
     // The cross-section grid polls from inside as well. It also used to

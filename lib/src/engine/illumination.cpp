@@ -68,15 +68,18 @@ public:
 
     Answer run() {
         try {
-            // The lattices' grids take O(n) memory each: built here, where
-            // running out of it is a memory limit like any other.
+            // The lattices' grids take O(n) memory and time each: built
+            // here, where running out of memory is a memory limit like any
+            // other and a stop request is polled for once an element.
             if (!stepper_) {
-                owned_ = fastest_stepper(scene_);
+                owned_ = fastest_stepper(scene_, lattice::SetupPoll(options_.monitor, 0));
                 stepper_ = owned_.get();
             }
             search();
         } catch (const std::bad_alloc&) {
             limit_ = Limit::memory;
+        } catch (const lattice::SetupStopped& stopped) {
+            limit_ = stopped.limit;
         }
         Answer answer = conclude();
         if (options_.illumination_observer) report(answer, *options_.illumination_observer);

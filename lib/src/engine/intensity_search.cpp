@@ -291,18 +291,25 @@ Answer solve_intensity(const Scene& scene, const SolveOptions& options,
 
 Answer solve_intensity(const Scene& scene, const SolveOptions& options) {
     check(scene, options);
-    // The lattices' grids take O(n) memory each: running out while building
-    // them is a memory limit like any other.
+    // The lattices' grids take O(n) memory and time each: running out of
+    // memory while building them is a memory limit like any other, and a
+    // stop request is polled for once an element.
     std::unique_ptr<EventStepper> stepper;
-    try {
-        stepper = options.engine == Engine::reference ? std::make_unique<ReferenceStepper>(scene)
-                                                      : fastest_stepper(scene);
-    } catch (const std::bad_alloc&) {
+    auto stopped = [&](Limit limit) {
         Answer answer;
         answer.engine = EngineUsed::branches;
-        answer.limit = Limit::memory;
+        answer.limit = limit;
         answer.targets.assign(scene.targets.size(), TargetAnswer{});
         return answer;
+    };
+    try {
+        stepper = options.engine == Engine::reference
+                      ? std::make_unique<ReferenceStepper>(scene)
+                      : fastest_stepper(scene, lattice::SetupPoll(options.monitor, 0));
+    } catch (const std::bad_alloc&) {
+        return stopped(Limit::memory);
+    } catch (const lattice::SetupStopped& stop) {
+        return stopped(stop.limit);
     }
     return IntensitySearch(scene, options, *stepper).run();
 }

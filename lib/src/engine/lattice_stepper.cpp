@@ -34,7 +34,8 @@ std::int64_t cells_per_element(int dim) {
 template <class Int, int M>
 class RayLatticeOn final : public LatticeStepper::RayLattice {
 public:
-    explicit RayLatticeOn(LatticeScene ls) : ls_(std::move(ls)), grid_(ls_, cells_per_element(M)) {
+    RayLatticeOn(LatticeScene ls, const lattice::SetupPoll& poll)
+        : ls_(std::move(ls)), grid_(ls_, cells_per_element(M), poll) {
         // The grid keeps what it shoots with; per element only what the
         // acting rule needs is kept besides.
         element_.reserve(ls_.elements.size());
@@ -99,28 +100,31 @@ private:
 };
 
 template <class Int>
-std::unique_ptr<LatticeStepper::RayLattice> on_int(LatticeScene ls) {
+std::unique_ptr<LatticeStepper::RayLattice> on_int(LatticeScene ls,
+                                                   const lattice::SetupPoll& poll) {
     switch (ls.dim) {
     case 1:
-        return std::make_unique<RayLatticeOn<Int, 1>>(std::move(ls));
+        return std::make_unique<RayLatticeOn<Int, 1>>(std::move(ls), poll);
     case 2:
-        return std::make_unique<RayLatticeOn<Int, 2>>(std::move(ls));
+        return std::make_unique<RayLatticeOn<Int, 2>>(std::move(ls), poll);
     default:
-        return std::make_unique<RayLatticeOn<Int, 3>>(std::move(ls));
+        return std::make_unique<RayLatticeOn<Int, 3>>(std::move(ls), poll);
     }
 }
 
 // The narrowest integer type the lattice engine proves safe for these
 // coordinates (lattice/lattice_int.hpp).
-std::unique_ptr<LatticeStepper::RayLattice> ray_lattice(LatticeScene ls) {
-    if (ls.magnitude < lattice::int64_limit()) return on_int<std::int64_t>(std::move(ls));
-    if (ls.magnitude < lattice::int128_limit()) return on_int<lattice::int128_t>(std::move(ls));
-    return on_int<Integer>(std::move(ls));
+std::unique_ptr<LatticeStepper::RayLattice> ray_lattice(LatticeScene ls,
+                                                        const lattice::SetupPoll& poll) {
+    if (ls.magnitude < lattice::int64_limit()) return on_int<std::int64_t>(std::move(ls), poll);
+    if (ls.magnitude < lattice::int128_limit())
+        return on_int<lattice::int128_t>(std::move(ls), poll);
+    return on_int<Integer>(std::move(ls), poll);
 }
 
 } // namespace
 
-LatticeStepper::LatticeStepper(const Scene& scene) : scene_(scene) {
+LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll) : scene_(scene) {
     const auto begin = std::chrono::steady_clock::now();
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
         const Ray& ray = scene.rays[r];
@@ -130,7 +134,7 @@ LatticeStepper::LatticeStepper(const Scene& scene) : scene_(scene) {
             return l->next(ray.start, ray.direction).has_value();
         });
         if (!held) {
-            lattices_.push_back(ray_lattice(lattice::make_lattice(scene, {}, r)));
+            lattices_.push_back(ray_lattice(lattice::make_lattice(scene, poll, r), poll));
             cells_ += lattices_.back()->cells();
         }
     }
@@ -159,8 +163,8 @@ ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
     throw std::logic_error("LatticeStepper: a state off every ray's lattice");
 }
 
-std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene) {
-    if (LatticeStepper::applies(scene)) return std::make_unique<LatticeStepper>(scene);
+std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene, const lattice::SetupPoll& poll) {
+    if (LatticeStepper::applies(scene)) return std::make_unique<LatticeStepper>(scene, poll);
     return std::make_unique<ReferenceStepper>(scene);
 }
 

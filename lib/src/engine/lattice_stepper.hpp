@@ -15,6 +15,7 @@
 #pragma once
 
 #include "engine/event_stepper.hpp"
+#include "lattice/setup_poll.hpp"
 
 #include <cstddef>
 #include <memory>
@@ -28,8 +29,9 @@ public:
     static bool applies(const Scene& scene) { return !scene.has_diagonal(); }
 
     // Builds one lattice and grid for every ray whose states no earlier
-    // ray's lattice holds: O(n) time and memory each.
-    explicit LatticeStepper(const Scene& scene);
+    // ray's lattice holds: O(n) time and memory each, calling `poll` once
+    // an element (it may throw lattice::SetupStopped).
+    explicit LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll = {});
     ~LatticeStepper() override;
 
     ReferenceEvent next(const Vector& p, const Vector& v) const override;
@@ -53,6 +55,7 @@ private:
 };
 
 // The lattice stepper where it applies, else the reference scan.
-std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene);
+std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene,
+                                              const lattice::SetupPoll& poll = {});
 
 } // namespace orthoray::engine
