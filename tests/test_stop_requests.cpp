@@ -8,6 +8,7 @@
 #include "support/test_files.hpp"
 
 #include "orthoray/generate.hpp"
+#include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
 
 #include <catch2/catch.hpp>
@@ -216,6 +217,34 @@ TEST_CASE("the illumination search polls while it builds its lattices on huge nu
     CHECK(stopped.reason == Reason::limit);
     CHECK(stopped.limit == Limit::interrupt);
     for (const TargetAnswer& t : stopped.targets) CHECK(t.status == TargetAnswer::Status::unknown);
+}
+
+TEST_CASE("the octagonal engine polls while it scales and builds its hierarchy",
+          "[stop_requests][octagonal]") {
+    // A box with 10^100000-digit sides and one diagonal mirror: scaling
+    // and the hierarchy poll once an element.
+    std::string b(100'001, '0');
+    b[0] = '1';
+    std::string a = b;
+    a.back() = '1';
+    const Scene scene = read_scene("dim 2\nmirror x 0 y 0 " + b + "\nmirror x " + a + " y 0 " + b +
+                                   "\nmirror y 0 x 0 " + a + "\nmirror y " + b + " x 0 " + a +
+                                   "\nmirror / 1 2 3 4\nray 0 0 2 1\ntarget 1/2 1/3\n");
+    REQUIRE(scene.has_diagonal());
+    SolveOptions options;
+    options.max_steps = 1;
+    StopAtPoll never(0);
+    options.monitor = &never;
+    const Answer whole = solve(scene, options);
+    CHECK(whole.limit == Limit::steps);
+    CHECK(never.polls >= 2);
+    StopAtPoll first(1);
+    options.monitor = &first;
+    const Answer stopped = solve(scene, options);
+    CHECK(stopped.reason == Reason::limit);
+    CHECK(stopped.limit == Limit::interrupt);
+    CHECK(stopped.reflections == 0);
+    CHECK(stopped.arithmetic == ArithmeticUsed::none); // stopped while scaling
 }
 
 TEST_CASE("in 3D too a stop at any poll of the setup on huge numbers ends the run cleanly",

@@ -53,8 +53,9 @@ bool passes(const Int (&target)[2], const Int (&p)[2], const Int (&w)[2],
 template <class Int>
 class Run {
 public:
-    Run(const OctagonalLattice& lattice, const SolveOptions& options)
-        : lattice_(lattice), options_(options), shooter_(lattice) {
+    Run(const OctagonalLattice& lattice, const SolveOptions& options,
+        const lattice::SetupPoll& poll)
+        : lattice_(lattice), options_(options), shooter_(lattice, poll) {
         for (int j = 0; j < 2; ++j) {
             s_.p[j] = lattice::from_integer<Int>(lattice.start[j]);
             target_[j] = lattice::from_integer<Int>(lattice.target[j]);
@@ -197,19 +198,27 @@ private:
     }
 };
 
+// The answer of a run that a limit ended during its setup.
+Answer stopped_in_setup(Limit limit, ArithmeticUsed arithmetic) {
+    Answer answer;
+    answer.engine = EngineUsed::lattice;
+    answer.arithmetic = arithmetic;
+    answer.limit = limit;
+    answer.reflections = 0;
+    return answer;
+}
+
 template <class Int>
 Answer run(const OctagonalLattice& lattice, const SolveOptions& options) {
     const auto begin = Clock::now();
     std::optional<Run<Int>> run;
     try {
-        run.emplace(lattice, options); // builds the hierarchy
+        // Builds the hierarchy, polling once an element (lattice/setup_poll.hpp).
+        run.emplace(lattice, options, lattice::SetupPoll(options.monitor, 0));
     } catch (const std::bad_alloc&) {
-        Answer answer;
-        answer.engine = EngineUsed::lattice;
-        answer.arithmetic = lattice::arithmetic_used(Int{});
-        answer.limit = Limit::memory;
-        answer.reflections = 0;
-        return answer;
+        return stopped_in_setup(Limit::memory, lattice::arithmetic_used(Int{}));
+    } catch (const lattice::SetupStopped& stopped) {
+        return stopped_in_setup(stopped.limit, lattice::arithmetic_used(Int{}));
     }
     run->answer().stats.setup.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
     return run->run();
@@ -221,7 +230,15 @@ Answer solve_octagonal(const Scene& scene, const SolveOptions& options) {
     if (options.shooter != Shooter::automatic && options.shooter != Shooter::bvh)
         throw UnsupportedScene("--shooter grid, pieces and section do not take diagonal "
                                "elements; --shooter bvh (the default for them) does");
-    const OctagonalLattice lattice = lattice::make_octagonal_lattice(scene);
+    std::optional<OctagonalLattice> scaled;
+    try {
+        scaled.emplace(
+            lattice::make_octagonal_lattice(scene, lattice::SetupPoll(options.monitor, 0)));
+    } catch (const lattice::SetupStopped& stopped) {
+        // Stopped while scaling: no integer type was chosen yet.
+        return stopped_in_setup(stopped.limit, ArithmeticUsed::none);
+    }
+    const OctagonalLattice& lattice = *scaled;
     const bool fits64 = lattice.magnitude < lattice::int64_limit();
     const bool fits128 = lattice.magnitude < lattice::int128_limit();
     switch (options.arithmetic) {

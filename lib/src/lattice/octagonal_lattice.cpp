@@ -91,7 +91,7 @@ void fill_outcomes(OctagonalLattice& out) {
 
 } // namespace
 
-OctagonalLattice make_octagonal_lattice(const Scene& scene) {
+OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll) {
     if (scene.dim != 2) throw std::invalid_argument("diagonal elements are 2D only");
     OctagonalLattice out;
     out.scene = &scene;
@@ -124,6 +124,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene) {
     take(scene.ray().start);
     take(scene.target());
     for (const Element& e : scene.elements) {
+        poll();
         take(e.lo);
         take(e.hi);
     }
@@ -142,6 +143,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene) {
     }
     out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
+        poll();
         OctagonalElement le;
         le.absorber = e.kind == ElementKind::absorber;
         le.orientation = orientation_of(e);

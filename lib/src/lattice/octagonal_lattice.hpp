@@ -25,6 +25,7 @@
 #pragma once
 
 #include "lattice/lattice_scene.hpp" // Coords
+#include "lattice/setup_poll.hpp"
 #include "orthoray/scene.hpp"
 
 #include <array>
@@ -80,6 +81,7 @@ struct OctagonalLattice {
 };
 
 // Throws std::invalid_argument unless the scene is 2D.
-OctagonalLattice make_octagonal_lattice(const Scene& scene);
+// `poll` is called once an element (SetupPoll: it may throw SetupStopped).
+OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll = {});
 
 } // namespace orthoray::lattice

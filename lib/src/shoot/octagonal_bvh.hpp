@@ -57,7 +57,9 @@ struct OctagonalShot {
 template <class Int>
 class OctagonalBvh {
 public:
-    explicit OctagonalBvh(const lattice::OctagonalLattice& lattice);
+    // `poll` is called once an element (it may throw lattice::SetupStopped).
+    explicit OctagonalBvh(const lattice::OctagonalLattice& lattice,
+                          const lattice::SetupPoll& poll = {});
 
     // From the lattice point p along direction d (an index of the lattice).
     OctagonalShot<Int> shoot(const Int (&p)[2], unsigned d) const;
@@ -127,7 +129,8 @@ private:
 };
 
 template <class Int>
-OctagonalBvh<Int>::OctagonalBvh(const lattice::OctagonalLattice& lattice) {
+OctagonalBvh<Int>::OctagonalBvh(const lattice::OctagonalLattice& lattice,
+                                const lattice::SetupPoll& poll) {
     for (unsigned d = 0; d < lattice::direction_count; ++d) {
         const Int x = lattice::from_integer<Int>(lattice.w[d][0]);
         const Int y = lattice::from_integer<Int>(lattice.w[d][1]);
@@ -149,6 +152,7 @@ OctagonalBvh<Int>::OctagonalBvh(const lattice::OctagonalLattice& lattice) {
     std::vector<Item> items;
     items.reserve(n);
     for (const lattice::OctagonalElement& e : lattice.elements) {
+        poll();
         Item it;
         for (int j = 0; j < 2; ++j) {
             it.lo[j] = lattice::from_integer<Int>(e.lo[j]);
