@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
+#include <type_traits>
 
 namespace orthoray::induction::octagonal {
 namespace {
@@ -47,9 +48,14 @@ private:
     };
 
     // Thrown by poll() when stop_ says so; build() turns it into a failure.
+    // On 128-bit integers a unit of work takes well under a microsecond, so
+    // stop_ is asked every 4,096 units; on GMP integers a unit can take
+    // milliseconds (numbers of 10^5 digits and more), so it is asked at
+    // every unit, which the monitor's own clock keeps cheap.
     struct Stopped {};
     void poll() {
-        if (stop_ && (++polls_ & 0xfff) == 0 && stop_()) throw Stopped{};
+        constexpr unsigned mask = std::is_same_v<Int, Integer> ? 0u : 0xfffu;
+        if (stop_ && (++polls_ & mask) == 0 && stop_()) throw Stopped{};
     }
 
     bool in_class(const Integer& w) const {
