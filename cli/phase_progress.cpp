@@ -27,8 +27,15 @@ PhaseProgress::~PhaseProgress() {
 }
 
 void PhaseProgress::phase(std::string what) {
+    phase(std::move(what), nullptr, "");
+}
+
+void PhaseProgress::phase(std::string what, const std::atomic<std::uint64_t>* counter,
+                          std::string unit) {
     const std::lock_guard lock(mutex_);
     phase_ = std::move(what);
+    counter_ = counter;
+    unit_ = std::move(unit);
 }
 
 void PhaseProgress::finish() {
@@ -53,9 +60,17 @@ void PhaseProgress::run() {
 
 // With mutex_ held (from run).
 void PhaseProgress::draw() {
+    // Display only: floating point never reaches an answer.
     const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
-    std::fprintf(stderr, "\r\033[Korthoray %s: %s, %.1f s", command_.c_str(), phase_.c_str(),
-                 seconds);
+    if (counter_) {
+        const std::uint64_t count = counter_->load(std::memory_order_relaxed);
+        std::fprintf(stderr, "\r\033[Korthoray %s: %s, %llu %s, %.3g/s, %.1f s", command_.c_str(),
+                     phase_.c_str(), static_cast<unsigned long long>(count), unit_.c_str(),
+                     static_cast<double>(count) / seconds, seconds);
+    } else {
+        std::fprintf(stderr, "\r\033[Korthoray %s: %s, %.1f s", command_.c_str(), phase_.c_str(),
+                     seconds);
+    }
     std::fflush(stderr);
     drawn_ = true;
     line_shown.store(true, std::memory_order_relaxed);

@@ -3,14 +3,21 @@
 //
 //     orthoray bounds: reading huge.scene, 2.5 s
 //
+// or, for a search that counts its steps from other threads (the Lazor
+// placement search), the count and its rate as `solve` shows them:
+//
+//     orthoray puzzle solve: searching level.bff, 1234567 nodes, 4.1e+05/s, 3.0 s
+//
 // drawn on stderr after the first second, refreshed four times a second by
 // a thread of its own (the phases themselves, a read or a bound on huge
 // numbers, poll nothing), and erased before the result is printed; only
 // when stderr is a terminal, never on a file or a pipe (docs/limits.md).
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -32,6 +39,10 @@ public:
 
     // What the command is doing now: "reading FILE", "writing FILE", ...
     void phase(std::string what);
+    // Shows `counter` (read relaxed, as other threads add to it) after the
+    // phase, with `unit` ("nodes") and its rate; until phase() is called
+    // again with a new counter or none.
+    void phase(std::string what, const std::atomic<std::uint64_t>* counter, std::string unit);
     // Stops the thread and erases the line; call before printing a result.
     void finish();
 
@@ -45,7 +56,8 @@ private:
     Clock::time_point begin_;
     std::mutex mutex_;
     std::condition_variable wake_;
-    std::string phase_;
+    std::string phase_, unit_;
+    const std::atomic<std::uint64_t>* counter_ = nullptr;
     bool stopping_ = false, drawn_ = false;
     std::thread thread_;
 };

@@ -7,6 +7,7 @@
 #include "orthoray/render.hpp"
 #include "orthoray/solve.hpp"
 #include "output_file.hpp"
+#include "phase_progress.hpp"
 #include "puzzle_json.hpp"
 #include "run_monitor.hpp"
 #include "stop_watcher.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 struct PuzzleSolveArgs {
     std::string level, out, picture;
-    bool json = false, all = false;
+    bool json = false, all = false, quiet = false;
     unsigned jobs = 0;
     double timeout = 0;
     std::uint64_t max_nodes = 0;
@@ -124,9 +125,15 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
     bool interrupted = false;
     const Clock::time_point begin_search = Clock::now();
     {
+        // The line shows the nodes the search has visited (docs/limits.md).
+        std::atomic<std::uint64_t> nodes{0};
+        options.progress = &nodes;
+        PhaseProgress progress("puzzle solve", !args.quiet);
+        progress.phase("searching " + args.level, &nodes, "nodes");
         const StopWatcher watcher(stop, deadline);
         solution = solve_lazor(level, options);
         interrupted = watcher.interrupted();
+        progress.finish();
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - begin_search).count();
     const std::string limit = solution.limit == "nodes" ? "nodes"
@@ -193,6 +200,9 @@ Command add_puzzle_solve(CLI::App& puzzle) {
         cmd->add_option("--max-nodes", args->max_nodes,
                         "visit at most N search nodes; without an answer by then, exit 3")
             ->check(whole_number_u64());
+    cmd->add_flag("--quiet", args->quiet,
+                  "no progress line (it is drawn on a terminal after a second: nodes, rate, "
+                  "time)");
     return [args, max_nodes] { return run(*args, max_nodes); };
 }
 

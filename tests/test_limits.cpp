@@ -447,3 +447,33 @@ TEST_CASE("bounds and convert show a progress line on a terminal only, and erase
     }
     fs::remove_all(dir);
 }
+
+TEST_CASE("puzzle solve shows its search nodes on a terminal, and erases the line",
+          "[limits][cli][puzzle][slow]") {
+    // An open 10 x 10 grid whose points lie on the laser's first path: --all
+    // has millions of placements to count, and --timeout ends it after the
+    // line has shown (exit 3, nothing proven).
+    const fs::path dir = fresh_dir("puzzle-progress");
+    std::string level = "GRID START\n";
+    for (int row = 0; row < 10; ++row) level += "o o o o o o o o o o\n";
+    level += "GRID STOP\nA 6\nC 2\nL 0 1 1 1\nP 2 3\nP 4 5\n";
+    const fs::path file = dir / "open.bff";
+    { std::ofstream(file) << level; }
+    int terminal = -1, child_side = -1;
+    REQUIRE(openpty(&terminal, &child_side, nullptr, nullptr, nullptr) == 0);
+    const std::string out = (dir / "out").string();
+    const pid_t child =
+        start_command({"puzzle", "solve", file.string(), "--all", "--jobs", "1", "--timeout", "2"},
+                      out, "", child_side);
+    close(child_side);
+    const std::string seen = read_terminal(terminal);
+    close(terminal);
+    CHECK(exit_status(child) == 3);
+    CHECK(seen.find("orthoray puzzle solve: searching " + file.string() + ", ") !=
+          std::string::npos);
+    CHECK(seen.find(" nodes, ") != std::string::npos);
+    REQUIRE(seen.size() >= 4);
+    CHECK(seen.substr(seen.size() - 4) == "\r\033[K");
+    CHECK(slurp(out).find("reason       limit (--timeout reached)") != std::string::npos);
+    fs::remove_all(dir);
+}

@@ -89,6 +89,9 @@ struct LazorSolveOptions {
     bool all = false;                        // count every solution
     std::optional<std::uint64_t> max_nodes;  // search nodes before giving up
     const std::atomic<bool>* stop = nullptr; // set from outside (deadline, signal)
+    // When set, every search node visited adds 1 (relaxed), for a progress
+    // line read from another thread.
+    std::atomic<std::uint64_t>* progress = nullptr;
 };
 
 struct LazorSolution {

@@ -95,7 +95,9 @@ LazorSolution solve_lazor(const LazorLevel& level, const LazorSolveOptions& opti
         options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
     std::atomic<std::uint64_t> nodes{0};
     std::atomic<bool> node_limit{false};
+    // Asked once a search node.
     auto stop = [&] {
+        if (options.progress) options.progress->fetch_add(1, std::memory_order_relaxed);
         if (options.stop && options.stop->load(std::memory_order_relaxed)) return true;
         if (!options.max_nodes) return false;
         if (nodes.fetch_add(1, std::memory_order_relaxed) < *options.max_nodes) return false;
