@@ -88,9 +88,11 @@ TEST_CASE("the derived model never delivers less than the scene", "[realistic][i
     shape.max_targets = 1;
     shape.scene.max_elements = 8;
     const Rational factors[] = {Rational(1), Rational(1, 2), Rational(2, 3), Rational(0)};
+    // Under sanitizers a quarter of the cases run, unless no scene has shown
+    // the over-approximation yet: then the full 600 may run to find one.
     const int cases = test::case_count(600);
-    int lit = 0, over = 0;
-    for (int i = 0; i < cases; ++i) {
+    int lit = 0, over = 0, ran = 0;
+    for (int i = 0; i < 600 && (i < cases || over == 0); ++i, ++ran) {
         shape.scene.dim = i % 3 == 0 ? 3 : 2;
         Scene s = test::random_optics_scene(rng, shape);
         for (Element& e : s.elements) {
@@ -107,7 +109,7 @@ TEST_CASE("the derived model never delivers less than the scene", "[realistic][i
         if (exact > 0) ++lit;
         if (dp.best > exact && exact > 0) ++over;
     }
-    CHECK(lit > cases / 10);
+    CHECK(lit > ran / 10);
     CHECK(over > 0);
 }
 
