@@ -12,6 +12,7 @@
 // still waiting, as nothing expanded later can offer less.
 #include "engine/illumination.hpp"
 
+#include "engine/branch_search_answer.hpp"
 #include "engine/branch_state_set.hpp"
 #include "engine/lattice_stepper.hpp"
 #include "engine/stretch.hpp"
@@ -202,7 +203,6 @@ private:
         answer.engine = EngineUsed::branches;
         answer.arithmetic = ArithmeticUsed::rational;
         if (stepper_) stepper_->describe(answer);
-        answer.targets.assign(scene_.targets.size(), TargetAnswer{});
         // At a limit a candidate is final only when no waiting branch state
         // (nor the one cut short) has a smaller label.
         std::optional<Label> least = pending_;
@@ -213,24 +213,13 @@ private:
                     (!least || w.label < *least))
                     least = w.label;
             }
-        bool all = true;
-        for (std::size_t t = 0; t < best_.size(); ++t) {
+        conclude_targets(answer, best_.size(), limit_, [&](std::size_t t, TargetAnswer& target) {
             const Candidate& c = best_[t];
-            TargetAnswer& target = answer.targets[t];
-            if (c.found && (!limit_ || !least || !(*least < c.label))) {
-                target.status = TargetAnswer::Status::lit;
-                target.reflections = Integer(static_cast<unsigned long>(c.label.reflections));
-                target.ray = c.label.ray;
-                if (target.reflections > answer.reflections)
-                    answer.reflections = target.reflections;
-            } else {
-                target.status =
-                    limit_ ? TargetAnswer::Status::unknown : TargetAnswer::Status::unlit;
-                all = false;
-            }
-        }
-        answer.reason = limit_ ? Reason::limit : all ? Reason::lit : Reason::unlit;
-        if (limit_) answer.limit = *limit_;
+            if (!c.found || (limit_ && least && *least < c.label)) return false;
+            target.reflections = Integer(static_cast<unsigned long>(c.label.reflections));
+            target.ray = c.label.ray;
+            return true;
+        });
         answer.states = Integer(static_cast<unsigned long>(states_.size()));
         answer.stats.illumination = {expanded_, events_, budget_.used()};
         return answer;

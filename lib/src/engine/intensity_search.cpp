@@ -18,6 +18,7 @@
 // is <= the threshold: nothing after it can light a target.
 #include "engine/intensity_search.hpp"
 
+#include "engine/branch_search_answer.hpp"
 #include "engine/branch_state_set.hpp"
 #include "engine/lattice_stepper.hpp"
 #include "engine/stretch.hpp"
@@ -218,7 +219,6 @@ private:
         answer.engine = EngineUsed::branches;
         answer.arithmetic = ArithmeticUsed::rational;
         stepper_.describe(answer);
-        answer.targets.assign(scene_.targets.size(), TargetAnswer{});
         // At a limit a candidate is final only when no waiting state (nor
         // the one cut short) is more intense.
         std::optional<Integer> most = pending_;
@@ -229,25 +229,14 @@ private:
                     (!most || *most < w.intensity))
                     most = w.intensity;
             }
-        bool all = true;
-        for (std::size_t t = 0; t < best_.size(); ++t) {
+        conclude_targets(answer, best_.size(), limit_, [&](std::size_t t, TargetAnswer& target) {
             const Candidate& c = best_[t];
-            TargetAnswer& target = answer.targets[t];
-            if (c.found && (!limit_ || !most || !(c.intensity < *most))) {
-                target.status = TargetAnswer::Status::lit;
-                target.intensity = c.intensity;
-                target.reflections = Integer(static_cast<unsigned long>(c.reflections));
-                target.ray = c.ray;
-                if (target.reflections > answer.reflections)
-                    answer.reflections = target.reflections;
-            } else {
-                target.status =
-                    limit_ ? TargetAnswer::Status::unknown : TargetAnswer::Status::unlit;
-                all = false;
-            }
-        }
-        answer.reason = limit_ ? Reason::limit : all ? Reason::lit : Reason::unlit;
-        if (limit_) answer.limit = *limit_;
+            if (!c.found || (limit_ && most && c.intensity < *most)) return false;
+            target.intensity = c.intensity;
+            target.reflections = Integer(static_cast<unsigned long>(c.reflections));
+            target.ray = c.ray;
+            return true;
+        });
         answer.states = Integer(static_cast<unsigned long>(states_.size()));
         answer.stats.illumination = {expanded_, events_, budget_.used()};
         return answer;
