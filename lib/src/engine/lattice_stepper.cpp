@@ -84,7 +84,7 @@ public:
         Vector point = ls_.point(at);
         const int j = ls_.active[0];
         Rational t = (point[j] - p[j]) / v[j];
-        return event_at(scene.dim, std::move(t), std::move(point), acting, v);
+        return event_at(scene.dim, std::move(t), std::move(point), std::move(acting), v);
     }
 
     std::size_t cells() const override { return grid_.cell_count(); }

@@ -31,8 +31,8 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
 // The event at `point`, parameter t along p + t v, where `acting` (not empty)
 // are the elements that act on v there: the acting rule's outcome
 // (event_rule.hpp) in an event's fields. Every stepper ends with it.
-ReferenceEvent event_at(int dim, Rational t, Vector point,
-                        const std::vector<const Element*>& acting, const Vector& v);
+ReferenceEvent event_at(int dim, Rational t, Vector point, std::vector<const Element*> acting,
+                        const Vector& v);
 
 // Whether x lies on p + tau v for 0 <= tau <= event.t (any tau >= 0 on escape).
 bool reference_passes(const Scene& scene, const Vector& x, const Vector& p, const Vector& v,

@@ -48,11 +48,11 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
         event.direction = v;
         return event;
     }
-    return event_at(scene.dim, std::move(event.t), std::move(event.point), acting, v);
+    return event_at(scene.dim, std::move(event.t), std::move(event.point), std::move(acting), v);
 }
 
-ReferenceEvent event_at(int dim, Rational t, Vector point,
-                        const std::vector<const Element*>& acting, const Vector& v) {
+ReferenceEvent event_at(int dim, Rational t, Vector point, std::vector<const Element*> acting,
+                        const Vector& v) {
     ReferenceEvent event;
     event.escape = false;
     event.t = std::move(t);
@@ -61,7 +61,7 @@ ReferenceEvent event_at(int dim, Rational t, Vector point,
     event.absorbed = outcome.absorbed;
     event.outgoing = std::move(outcome.outgoing);
     event.direction = event.absorbed ? v : event.outgoing.front().direction;
-    event.acting = acting;
+    event.acting = std::move(acting);
     return event;
 }
 
