@@ -19,6 +19,7 @@ namespace orthoray::cli {
 namespace {
 
 void check(const BatchArgs& args) {
+    args.choices.check();
     if (!args.certificates.empty() &&
         (args.choices.engine == "graph" || args.choices.engine == "reference"))
         throw UsageError("found --engine " + args.choices.engine +

@@ -1,5 +1,6 @@
 #include "solve_choices.hpp"
 
+#include "commands.hpp"
 #include "option_checks.hpp"
 
 #include <map>
@@ -27,6 +28,17 @@ std::vector<std::string> names(const std::map<std::string, T>& choices) {
 
 } // namespace
 
+void SolveChoices::check() const {
+    if (min_intensity.empty()) return;
+    if (min_intensity.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError("found --min-intensity " + min_intensity +
+                         ", expected a natural number (0, 1, 2, ...)");
+    if (engine == "graph" || engine == "induction")
+        throw UsageError("found --engine " + engine +
+                         " with --min-intensity, expected --engine auto, lattice or reference "
+                         "(the intensity question has its own branch search)");
+}
+
 SolveOptions SolveChoices::options() const {
     SolveOptions options;
     options.engine = engine_names().at(engine);
@@ -34,6 +46,7 @@ SolveOptions SolveChoices::options() const {
     options.arithmetic = arithmetics.at(arithmetic);
     options.shooter = shooters.at(shooter);
     if (max_steps_option && max_steps_option->count() > 0) options.max_steps = max_steps;
+    if (!min_intensity.empty()) options.min_intensity = Integer(min_intensity, 10);
     return options;
 }
 
@@ -81,6 +94,11 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
            "elements cluster), grid (uniform grid), bvh, pieces (2D piece tables from the "
            "start) or section (cross-section grid)")
         ->check(CLI::IsMember(names(shooters)));
+    cmd->add_option("--min-intensity", c.min_intensity,
+                    "EPS, a natural number: is each target reached by a branch with intensity "
+                    "greater than EPS? Rays carry intensities, elements reflectances and "
+                    "transmittances, floored after every event (docs/intensity.md); every ray "
+                    "needs 'intensity N'");
 }
 
 } // namespace orthoray::cli

@@ -21,8 +21,13 @@ struct SolveChoices {
     std::string engine = "auto", detector = "first-state", arithmetic = "auto", shooter = "auto";
     std::uint64_t max_steps = 0, max_memory = 0;
     double timeout = 0; // seconds; 0: no timeout
+    // --min-intensity EPS (docs/intensity.md), as written; empty: not asked.
+    std::string min_intensity;
     const CLI::Option* max_steps_option = nullptr;
 
+    // Refuses what the intensity question does not take: an EPS that is not
+    // a natural number, the graph and induction engines (UsageError).
+    void check() const;
     // The library's options for these choices (no observers attached).
     SolveOptions options() const;
     // `begin` plus the timeout, when there is one.
@@ -31,7 +36,7 @@ struct SolveChoices {
 };
 
 // Registers --engine, --cycle-detector, --arithmetic, --shooter,
-// --max-steps, --timeout and --max-memory on `cmd`. `max_memory_help` says
+// --max-steps, --timeout, --max-memory and --min-intensity on `cmd`. `max_memory_help` says
 // what the memory limit covers (one solve, or the whole batch).
 void add_solve_choices(CLI::App* cmd, SolveChoices& choices, const std::string& max_memory_help);
 

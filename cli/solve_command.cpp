@@ -21,7 +21,7 @@ namespace orthoray::cli {
 namespace {
 
 struct SolveArgs {
-    std::string file, certificate, format, certificate_format = "text", min_intensity;
+    std::string file, certificate, format, certificate_format = "text";
     bool json = false, quiet = false;
     SolveChoices choices;
 };
@@ -86,21 +86,6 @@ Answer stopped_before_solving(Limit limit) {
     return answer;
 }
 
-// --min-intensity (docs/intensity.md): a natural number, its own search,
-// which writes no certificate yet.
-void check_intensity_options(const SolveArgs& args, const CLI::Option* certificate) {
-    if (args.min_intensity.find_first_not_of("0123456789") != std::string::npos)
-        throw UsageError("found --min-intensity " + args.min_intensity +
-                         ", expected a natural number (0, 1, 2, ...)");
-    if (certificate->count() > 0)
-        throw UsageError("found --certificate with --min-intensity, expected one of them (the "
-                         "intensity search writes no certificate yet; docs/intensity.md)");
-    if (args.choices.engine == "graph" || args.choices.engine == "induction")
-        throw UsageError("found --engine " + args.choices.engine +
-                         " with --min-intensity, expected --engine auto, lattice or reference "
-                         "(the intensity question has its own branch search)");
-}
-
 // Every ray must say how intense it starts: the first that does not is bad
 // input, at its line.
 void require_intensities(const Scene& scene, const std::string& file) {
@@ -113,7 +98,7 @@ void require_intensities(const Scene& scene, const std::string& file) {
 
 int run(const SolveArgs& args, const CLI::Option* certificate) {
     const auto begin_command = std::chrono::steady_clock::now();
-    if (!args.min_intensity.empty()) check_intensity_options(args, certificate);
+    args.choices.check();
     if (certificate->count() > 0 && args.choices.engine == "graph")
         throw UsageError("found --engine graph with --certificate, expected another engine "
                          "(the graph engine writes no certificate)");
@@ -150,17 +135,15 @@ int run(const SolveArgs& args, const CLI::Option* certificate) {
                       0);
     }
     // The reference illumination search keeps every state and proves
-    // nothing: it writes no certificate.
+    // nothing: it writes no certificate. (The intensity search with the
+    // reference scan is the same search as without it, and writes one.)
     if (certificate->count() > 0 && args.choices.engine == "reference" &&
-        !scene.single_trajectory())
+        !scene.single_trajectory() && args.choices.min_intensity.empty())
         throw UsageError("found --engine reference with --certificate for the illumination "
                          "question, expected another engine (the reference illumination search "
                          "writes no certificate)");
     SolveOptions options = args.choices.options();
-    if (!args.min_intensity.empty()) {
-        options.min_intensity = Integer(args.min_intensity, 10);
-        require_intensities(scene, args.file);
-    }
+    if (options.min_intensity) require_intensities(scene, args.file);
     // The illumination search keeps its branch states within three quarters
     // of the same budget, so it ends with Limit::memory at a state boundary,
     // lit targets kept, rather than wherever an allocation fails; the last
@@ -237,11 +220,6 @@ Command add_solve(CLI::App& app) {
     add_solve_choices(cmd, args->choices,
                       "let the process grow by at most MB megabytes of address space; running "
                       "out answers unknown (reason limit, limit memory), exit 3");
-    cmd->add_option("--min-intensity", args->min_intensity,
-                    "EPS, a natural number: is each target reached by a branch with intensity "
-                    "greater than EPS? Rays carry intensities, elements reflectances and "
-                    "transmittances, floored after every event (docs/intensity.md); every ray "
-                    "needs 'intensity N'; no certificate");
     cmd->add_flag("--quiet", args->quiet,
                   "no progress line (it is shown on long runs only when stderr is a terminal)");
     return [args, certificate] { return run(*args, certificate); };

@@ -89,13 +89,6 @@ std::vector<std::vector<Integer>> brute_force(const Scene& scene, const Integer&
     return best;
 }
 
-const Rational factors[] = {Rational(1),     Rational(1, 2), Rational(2, 3),
-                            Rational(9, 10), Rational(0),    Rational(3, 4)};
-
-Rational random_factor(std::mt19937_64& rng) {
-    return factors[test::pick_index(rng, 0, std::size(factors) - 1)];
-}
-
 } // namespace
 
 TEST_CASE("a mirror corridor floors the intensity once a reflection", "[intensity]") {
@@ -181,13 +174,7 @@ TEST_CASE("the intensity search agrees with a brute-force enumeration of branche
         shape.scene.dim = i % 3 == 0 ? 3 : 2;
         shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
         Scene s = test::random_optics_scene(rng, shape);
-        for (Element& e : s.elements) {
-            if (e.kind == ElementKind::absorber) continue;
-            if (test::chance(rng, 70)) e.reflectance = random_factor(rng);
-            if (e.kind == ElementKind::splitter && test::chance(rng, 70))
-                e.transmittance = random_factor(rng);
-        }
-        for (Ray& r : s.rays) r.intensity = Integer(test::pick(rng, 0, 400));
+        test::add_random_attenuation(rng, s, 400);
         const Integer eps = test::pick(rng, 0, 40);
         INFO("case " << i << " eps " << eps << "\n" << write_scene(s));
         const std::vector<std::vector<Integer>> best = brute_force(s, eps);
@@ -363,9 +350,18 @@ TEST_CASE("solve --min-intensity prints intensities and exits 0, 1, 2 or 3", "[i
     CHECK(missing.out.empty());
     CHECK(test::run_cli("solve --min-intensity 1/2 " + test::quote(file)).status == 2);
     CHECK(test::run_cli("solve --min-intensity 0 --engine graph " + test::quote(file)).status == 2);
+    // A certificate, which verify accepts; batch takes the option too.
     const test::CliResult cert =
-        test::run_cli("solve --min-intensity 0 --certificate " + test::quote(dir.path("c")) + " " +
-                      test::quote(file));
-    CHECK(cert.status == 2);
-    CHECK(cert.err.find("writes no certificate") != std::string::npos);
+        test::run_cli("solve --min-intensity 300 --certificate " + test::quote(dir.path("c")) +
+                      " " + test::quote(file));
+    CHECK(cert.status == 0);
+    const test::CliResult verified =
+        test::run_cli("verify " + test::quote(file) + " " + test::quote(dir.path("c")));
+    CHECK(verified.status == 0);
+    CHECK(verified.out == "valid: lit above intensity 300, 1 reflections, 3 states\n");
+    const test::CliResult batch =
+        test::run_cli("batch --jobs 1 --min-intensity 333 -o " + test::quote(dir.path("r.jsonl")) +
+                      " " + test::quote(file));
+    CHECK(batch.status == 0); // every instance decided (docs/batch.md)
+    CHECK(read_file(dir.path("r.jsonl")).find(R"("ray":1,"intensity":500})") != std::string::npos);
 }

@@ -401,7 +401,7 @@ TEST_CASE("malformed illumination statements are located", "[certificate][optics
                      "{\"branch\": {\"point\": [\"0\",\"0\"], \"direction\": [\"1\",\"0\"], "
                      "\"rays\": \"1\"}}\n",
                      "<test>:3:57: found the key \"rays\", expected \"point\", \"direction\", "
-                     "\"ray\" or \"reflections\"");
+                     "\"ray\", \"reflections\" or \"intensity\"");
 }
 
 TEST_CASE("random mutations of the hand-made certificates never prove a false answer",

@@ -3,9 +3,12 @@
 // (the illumination question). Any bytes give a verdict or an InputError;
 // a verdict of valid must be for the true answer: for the box, yes after 6
 // reflections; for the splitter scene, targets 1 and 2 lit (the second
-// after 1 reflection) and target 3 unlit.
+// after 1 reflection) and target 3 unlit. A third scene carries
+// intensities (docs/intensity.md): a valid intensity certificate must give
+// the answer the search gives at its threshold.
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
+#include "orthoray/solve.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -21,6 +24,29 @@ void check(const orthoray::Scene& scene, const std::string& bytes, const char* t
         const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "fuzz");
         if (verdict.valid && verdict.message.find(truth) == std::string::npos)
             std::abort(); // a certificate proved something false
+    } catch (const orthoray::InputError& e) {
+        if (e.line() < 1 || e.column() < 1) std::abort();
+    }
+}
+
+// A verdict "valid: REASON above intensity EPS, K reflections, ..." must
+// be the search's reason and reflections at that EPS.
+void check_intensity(const orthoray::Scene& scene, const std::string& bytes) {
+    std::istringstream in(bytes);
+    try {
+        const orthoray::Verdict verdict = orthoray::verify_certificate(scene, in, "fuzz");
+        if (!verdict.valid) return;
+        const std::string::size_type at = verdict.message.find(" above intensity ");
+        if (at == std::string::npos) std::abort(); // valid, but not for the intensity question
+        const std::string::size_type from = at + 17;
+        orthoray::SolveOptions options;
+        options.min_intensity =
+            orthoray::Integer(verdict.message.substr(from, verdict.message.find(',', from) - from));
+        const orthoray::Answer truth = orthoray::solve(scene, options);
+        const std::string expected = std::string("valid: ") + orthoray::to_string(truth.reason) +
+                                     " above intensity " + options.min_intensity->get_str() + ", " +
+                                     truth.reflections.get_str() + " reflections,";
+        if (verdict.message.compare(0, expected.size(), expected) != 0) std::abort();
     } catch (const orthoray::InputError& e) {
         if (e.line() < 1 || e.column() < 1) std::abort();
     }
@@ -42,8 +68,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                               "target 5 0\n"
                                                               "target -3 0\n"
                                                               "target 2 -3\n");
+    static const orthoray::Scene corridor =
+        orthoray::read_scene("dim 2\n"
+                             "mirror x 4 y -1 1 reflectance 2/3\n"
+                             "mirror x -4 y -1 1 reflectance 2/3\n"
+                             "splitter x 2 y -1 1 reflectance 1/2 transmittance 1/3\n"
+                             "ray 0 0 1 0 intensity 1000\n"
+                             "target 3 0\n"
+                             "target -2 0\n"
+                             "target 0 5\n");
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     check(box, bytes, "hit, 6 reflections");
     check(split, bytes, "unlit, 1 reflections,");
+    check_intensity(corridor, bytes);
     return 0;
 }

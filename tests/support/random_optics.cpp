@@ -54,4 +54,25 @@ Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape) 
     return scene;
 }
 
+namespace {
+
+const Rational factors[] = {Rational(1),     Rational(1, 2), Rational(2, 3),
+                            Rational(9, 10), Rational(0),    Rational(3, 4)};
+
+Rational random_factor(std::mt19937_64& rng) {
+    return factors[pick_index(rng, 0, std::size(factors) - 1)];
+}
+
+} // namespace
+
+void add_random_attenuation(std::mt19937_64& rng, Scene& scene, int max_intensity) {
+    for (Element& e : scene.elements) {
+        if (e.kind == ElementKind::absorber) continue;
+        if (chance(rng, 70)) e.reflectance = random_factor(rng);
+        if (e.kind == ElementKind::splitter && chance(rng, 70))
+            e.transmittance = random_factor(rng);
+    }
+    for (Ray& r : scene.rays) r.intensity = Integer(pick(rng, 0, max_intensity));
+}
+
 } // namespace orthoray::test

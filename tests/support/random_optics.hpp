@@ -15,6 +15,11 @@ struct RandomOpticsShape {
 
 Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape);
 
+// docs/intensity.md's attributes on a scene: most mirrors and splitters get
+// a reflectance, most splitters a transmittance (each from 0, 1/2, 2/3,
+// 3/4, 9/10 and 1), and every ray an intensity in [0, max_intensity].
+void add_random_attenuation(std::mt19937_64& rng, Scene& scene, int max_intensity);
+
 // A point some branch passes: follow a random ray through a few events,
 // taking a random outgoing direction at each, and pick a point of the
 // segment reached (an end, an inner point, or a point of the final ray).

@@ -32,7 +32,9 @@ public:
     // induction engine decides (docs/induction-certificates.md); the points
     // so far are their prefix. For the illumination question (several rays
     // or targets, or a splitter) it sets options.illumination_observer to
-    // its illumination section instead (docs/certificates.md).
+    // its illumination section instead (docs/certificates.md), and for the
+    // intensity question (options.min_intensity set, docs/intensity.md)
+    // options.intensity_observer to the same section in its intensity form.
     void attach(SolveOptions& options);
     void visit(const Vector& point, const Vector& direction) override;
     // The start of a cycle entered after a tail: the verdict's `state`.

@@ -92,6 +92,23 @@ public:
     virtual void unknown(std::size_t target) = 0;
 };
 
+// Sees the evidence behind an answer to the intensity question
+// (docs/intensity.md, docs/certificates.md): after the search, every branch
+// state it expanded with the greatest intensity reaching it, then each
+// target in order: lit (with the greatest intensity passing it, then the
+// steps of one branch achieving it, as for IlluminationObserver), unlit,
+// or unknown (at a limit). Rays and targets are numbered from 1.
+class IntensityObserver {
+public:
+    virtual ~IntensityObserver() = default;
+    virtual void branch(const Vector& point, const Vector& direction, const Integer& intensity) = 0;
+    virtual void lit(std::size_t target, std::uint64_t reflections, std::size_t ray,
+                     const Integer& intensity) = 0;
+    virtual void step(const Vector& point, const Vector& direction) = 0;
+    virtual void unlit(std::size_t target) = 0;
+    virtual void unknown(std::size_t target) = 0;
+};
+
 // A PathSink that keeps everything it is given. Its memory grows with the
 // path, so it suits short runs and tests; certificates stream instead.
 class PathRecorder : public PathSink {
@@ -143,8 +160,11 @@ struct SolveOptions {
     IlluminationObserver* illumination_observer = nullptr;
     // Set: the intensity question (docs/intensity.md) instead: is each
     // target reached by a branch with intensity greater than this? Every
-    // ray must carry an intensity; no certificate is written.
+    // ray must carry an intensity.
     std::optional<Integer> min_intensity;
+    // Sees the evidence of an answer to the intensity question. A
+    // CertificateWriter attaches itself when min_intensity is set.
+    IntensityObserver* intensity_observer = nullptr;
 };
 
 // Running out of memory while solving is a limit too (Reason::limit,

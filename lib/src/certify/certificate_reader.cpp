@@ -23,6 +23,7 @@ int clamp_int(long long value) {
 constexpr std::string_view json_keywords[] = {"orthoray-certificate",
                                               "dim",
                                               "illumination",
+                                              "min-intensity",
                                               "branch",
                                               "lit",
                                               "unlit",
@@ -64,8 +65,13 @@ const std::vector<ObjectForm>& object_forms() {
     static const std::vector<ObjectForm> forms = {
         {"state", {{"point", false}, {"direction", false}}},
         {"step", {{"point", false}, {"direction", false}}},
-        {"branch", {{"point", false}, {"direction", false}, {"ray", true}, {"reflections", true}}},
-        {"lit", {{"target", false}, {"reflections", true}, {"ray", true}}},
+        {"branch",
+         {{"point", false},
+          {"direction", false},
+          {"ray", true},
+          {"reflections", true},
+          {"intensity", true}}},
+        {"lit", {{"target", false}, {"reflections", true}, {"ray", true}, {"intensity", true}}},
     };
     return forms;
 }

@@ -110,8 +110,14 @@ void CertificateWriter::write_vector(const Vector& x) {
 CertificateWriter::~CertificateWriter() = default;
 
 void CertificateWriter::attach(SolveOptions& options) {
+    if (options.min_intensity) {
+        illumination_ = std::make_unique<IlluminationSection>(*this, options.min_intensity);
+        options.intensity_observer = illumination_.get();
+        return;
+    }
     if (!scene_.single_trajectory()) {
-        if (!illumination_) illumination_ = std::make_unique<IlluminationSection>(*this);
+        if (!illumination_)
+            illumination_ = std::make_unique<IlluminationSection>(*this, std::nullopt);
         options.illumination_observer = illumination_.get();
         return;
     }
@@ -137,8 +143,9 @@ void CertificateWriter::cycle_start(const Vector& point, const Vector& direction
 }
 
 void CertificateWriter::finish(const Answer& answer) {
-    if (!scene_.single_trajectory()) {
-        if (!illumination_) illumination_ = std::make_unique<IlluminationSection>(*this);
+    if (illumination_ || !scene_.single_trajectory()) {
+        if (!illumination_)
+            illumination_ = std::make_unique<IlluminationSection>(*this, std::nullopt);
         illumination_->finish(answer);
         return;
     }

@@ -8,20 +8,32 @@ namespace orthoray {
 
 void CertificateWriter::IlluminationSection::branch(const Vector& point, const Vector& direction,
                                                     std::size_t ray, std::uint64_t reflections) {
+    branch_state(point, direction);
+    if (json())
+        writer_.out_ << ", \"ray\": \"" << ray << "\", \"reflections\": \"" << reflections
+                     << "\"}}\n";
+    else
+        writer_.out_ << " ray " << ray << " reflections " << reflections << '\n';
+}
+
+void CertificateWriter::IlluminationSection::branch(const Vector& point, const Vector& direction,
+                                                    const Integer& intensity) {
+    branch_state(point, direction);
+    if (json())
+        writer_.out_ << ", \"intensity\": \"" << intensity.get_str() << "\"}}\n";
+    else
+        writer_.out_ << " intensity " << intensity.get_str() << '\n';
+}
+
+// `branch X V` or the branch object up to its direction; the caller ends it.
+void CertificateWriter::IlluminationSection::branch_state(const Vector& point,
+                                                          const Vector& direction) {
     begin();
     std::ostream& out = writer_.out_;
-    if (json()) {
-        out << "{\"branch\": {\"point\": ";
-        writer_.write_vector(point);
-        out << ", \"direction\": ";
-        writer_.write_vector(direction);
-        out << ", \"ray\": \"" << ray << "\", \"reflections\": \"" << reflections << "\"}}\n";
-    } else {
-        out << "branch";
-        writer_.write_vector(point);
-        writer_.write_vector(direction);
-        out << " ray " << ray << " reflections " << reflections << '\n';
-    }
+    out << (json() ? "{\"branch\": {\"point\": " : "branch");
+    writer_.write_vector(point);
+    out << (json() ? ", \"direction\": " : "");
+    writer_.write_vector(direction);
     ++branches_;
 }
 
@@ -34,6 +46,19 @@ void CertificateWriter::IlluminationSection::lit(std::size_t target, std::uint64
     else
         writer_.out_ << "lit " << target << " reflections " << reflections << " ray " << ray
                      << '\n';
+    listed_ = true;
+}
+
+void CertificateWriter::IlluminationSection::lit(std::size_t target, std::uint64_t reflections,
+                                                 std::size_t ray, const Integer& intensity) {
+    begin();
+    if (json())
+        writer_.out_ << "{\"lit\": {\"target\": \"" << target << "\", \"reflections\": \""
+                     << reflections << "\", \"ray\": \"" << ray << "\", \"intensity\": \""
+                     << intensity.get_str() << "\"}}\n";
+    else
+        writer_.out_ << "lit " << target << " reflections " << reflections << " ray " << ray
+                     << " intensity " << intensity.get_str() << '\n';
     listed_ = true;
 }
 
@@ -80,6 +105,12 @@ bool CertificateWriter::IlluminationSection::json() const {
 void CertificateWriter::IlluminationSection::begin() {
     if (begun_) return;
     writer_.out_ << (json() ? "{\"illumination\": true}\n" : "illumination\n");
+    if (min_intensity_) {
+        if (json())
+            writer_.out_ << "{\"min-intensity\": \"" << min_intensity_->get_str() << "\"}\n";
+        else
+            writer_.out_ << "min-intensity " << min_intensity_->get_str() << '\n';
+    }
     begun_ = true;
 }
 

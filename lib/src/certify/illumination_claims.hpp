@@ -9,6 +9,7 @@
 #include "orthoray/scene.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,19 +41,24 @@ inline bool numbers_one_of(const Integer& n, std::size_t count) {
 
 struct BranchLine {
     Vector point, direction;
-    Label label;
+    Label label;        // the illumination question
+    Integer intensity;  // the intensity question: an upper bound at this state
     long long line = 0; // in the certificate file
 };
 
 struct TargetLine {
     enum class Claim { lit, unlit, unknown };
     Claim claim = Claim::unknown;
-    Integer target; // as written, numbered from 1
-    Label label;    // lit only
+    Integer target;    // as written, numbered from 1
+    Label label;       // lit only
+    Integer intensity; // lit, in an intensity certificate
     long long line = 0;
 };
 
 struct IlluminationClaims {
+    // Set: a certificate for the intensity question (docs/intensity.md),
+    // whose branch and lit lines carry intensities.
+    std::optional<Integer> min_intensity;
     std::vector<BranchLine> branches;
     std::vector<TargetLine> targets;
     std::string answer;

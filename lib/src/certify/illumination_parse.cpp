@@ -20,14 +20,21 @@ void expect_size(const CertificateReader& in, std::size_t size, const std::strin
     if (in.size() > size) in.fail(size, in.end_of_statement());
 }
 
-// branch X V ray R reflections K
-BranchLine parse_branch(const CertificateReader& in, int dim) {
+// branch X V ray R reflections K, or in an intensity certificate
+// branch X V intensity I
+BranchLine parse_branch(const CertificateReader& in, int dim, bool intensity) {
     const std::size_t d = static_cast<std::size_t>(dim);
     BranchLine b;
     b.line = in.line();
     if (in.size() < 2 * d + 1) in.fail(in.size(), "a number");
     b.point = in.vector(1, dim);
     b.direction = in.vector(1 + d, dim);
+    if (intensity) {
+        expect_word(in, 2 * d + 1, "intensity");
+        expect_size(in, 2 * d + 3, "a non-negative integer");
+        b.intensity = in.count(2 * d + 2);
+        return b;
+    }
     expect_word(in, 2 * d + 1, "ray");
     if (in.size() < 2 * d + 3) in.fail(in.size(), "a ray number");
     b.label.ray = in.count(2 * d + 2);
@@ -37,8 +44,8 @@ BranchLine parse_branch(const CertificateReader& in, int dim) {
     return b;
 }
 
-// lit T reflections K ray R | unlit T | unknown T
-TargetLine parse_target(const CertificateReader& in) {
+// lit T reflections K ray R [intensity I] | unlit T | unknown T
+TargetLine parse_target(const CertificateReader& in, bool intensity) {
     TargetLine t;
     t.line = in.line();
     const std::string_view word = in.keyword();
@@ -55,8 +62,16 @@ TargetLine parse_target(const CertificateReader& in) {
     if (in.size() < 4) in.fail(in.size(), "a non-negative integer");
     t.label.reflections = in.count(3);
     expect_word(in, 4, "ray");
-    expect_size(in, 6, "a ray number");
+    if (!intensity) {
+        expect_size(in, 6, "a ray number");
+        t.label.ray = in.count(5);
+        return t;
+    }
+    if (in.size() < 6) in.fail(in.size(), "a ray number");
     t.label.ray = in.count(5);
+    expect_word(in, 6, "intensity");
+    expect_size(in, 8, "a non-negative integer");
+    t.intensity = in.count(7);
     return t;
 }
 
@@ -102,17 +117,23 @@ IlluminationClaims parse_illumination(CertificateReader& in, int dim, WitnessChe
     IlluminationClaims c;
     in.expect("illumination", 0, in.end_of_statement());
     in.advance();
+    if (in.keyword() == "min-intensity") {
+        in.expect("min-intensity", 1, "a non-negative integer");
+        c.min_intensity = in.count(1);
+        in.advance();
+    }
+    const bool intensity = c.min_intensity.has_value();
     while (in.keyword() == "branch") {
-        c.branches.push_back(parse_branch(in, dim));
+        c.branches.push_back(parse_branch(in, dim, intensity));
         in.advance();
     }
     const char* next = "'branch', 'lit', 'unlit', 'unknown' or 'answer'";
     while (is_target_line(in.keyword())) {
-        c.targets.push_back(parse_target(in));
+        c.targets.push_back(parse_target(in, intensity));
         const bool lit = c.targets.back().claim == TargetLine::Claim::lit;
         in.advance();
         if (lit) {
-            witnesses.begin(c.targets.back());
+            witnesses.begin(c.targets.back(), c.min_intensity);
             while (in.keyword() == "step") {
                 in.expect("step", 2 * static_cast<std::size_t>(dim), "a number");
                 witnesses.step(in.vector(1, dim), in.vector(1 + dim, dim));

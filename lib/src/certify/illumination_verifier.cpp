@@ -5,6 +5,9 @@
 // lit ones (one walk of every stretch serves all three), and last the
 // verdict's counts.
 //
+// An intensity certificate (a `min-intensity` line) has its own closure
+// check, with intensities as upper bounds: intensity_closure.cpp.
+//
 // Why closure with lower bounds proves minimality: every branch of ray r
 // starts at r's start state, whose line has a label <= (0, r), and a branch
 // that reaches a branch state after k reflections enters it from the
@@ -17,11 +20,12 @@
 // grows with the number of branch lines, never with the reflections.
 #include "certify/illumination_verifier.hpp"
 
+#include "certify/illumination_check_support.hpp"
 #include "certify/illumination_parse.hpp"
+#include "certify/intensity_closure.hpp"
 #include "certify/path_geometry.hpp"
 #include "certify/stretch_walk.hpp"
 
-#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,30 +33,6 @@
 
 namespace orthoray::certify {
 namespace {
-
-struct StateOrder {
-    bool operator()(const std::pair<Vector, Vector>& a, const std::pair<Vector, Vector>& b) const {
-        for (int j = 0; j < 3; ++j)
-            if (int c = cmp(a.first[j], b.first[j])) return c < 0;
-        for (int j = 0; j < 3; ++j)
-            if (int c = cmp(a.second[j], b.second[j])) return c < 0;
-        return false;
-    }
-};
-using StateIndex = std::map<std::pair<Vector, Vector>, std::size_t, StateOrder>;
-
-// A failed check, caught by verify_illumination.
-struct Invalid {
-    std::string message;
-};
-
-[[noreturn]] void invalid(const std::string& what) {
-    throw Invalid{"invalid: " + what};
-}
-
-std::string at_line(long long line) {
-    return "line " + std::to_string(line);
-}
 
 class IlluminationCheck {
 public:
@@ -88,7 +68,7 @@ public:
                 invalid("target " + std::to_string(i + 1) + " has no lit, unlit or unknown line");
         for (std::size_t b = 0; b < claims_.branches.size(); ++b) {
             const BranchLine& line = claims_.branches[b];
-            if (!numbers_one_of(line.label.ray, scene_.rays.size()))
+            if (!claims_.min_intensity && !numbers_one_of(line.label.ray, scene_.rays.size()))
                 invalid("branch on " + at_line(line.line) + ": ray " + line.label.ray.get_str() +
                         ", but the scene has " + std::to_string(scene_.rays.size()) + " rays");
             const auto [it, fresh] = index_.emplace(std::pair{line.point, line.direction}, b);
@@ -101,6 +81,8 @@ public:
     // Checks 3 to 5 of docs/certificates.md, for a complete certificate:
     // the rays' start states, then one walk of every stretch.
     void closure_and_targets() {
+        if (claims_.min_intensity)
+            return check_intensity_closure(scene_, claims_, claim_of_, index_);
         for (std::size_t r = 0; r < scene_.rays.size(); ++r) {
             const Ray& ray = scene_.rays[r];
             const Label bound{0, to_integer(r + 1)};
@@ -146,7 +128,9 @@ public:
         if (claims_.partial)
             return {false, "partial certificate: " + std::to_string(lit) +
                                " lit targets' witnesses checked, no answer proven"};
-        return {true, std::string("valid: ") + reason + ", " + largest.get_str() +
+        const std::string above =
+            claims_.min_intensity ? " above intensity " + claims_.min_intensity->get_str() : "";
+        return {true, std::string("valid: ") + reason + above + ", " + largest.get_str() +
                           " reflections, " + lines.get_str() + " states"};
     }
 
@@ -169,6 +153,7 @@ private:
                     passed[i] = true;
                     target_met(line, from, i, s);
                 }
+                return true;
             });
         if (end.kind != StretchEnd::Kind::branch) return;
         const Vector& q = end.point;
@@ -217,7 +202,7 @@ private:
 Verdict verify_illumination(const Scene& scene, CertificateReader& in) {
     WitnessCheck witnesses(scene);
     const IlluminationClaims claims = parse_illumination(in, scene.dim, witnesses);
-    if (scene.single_trajectory())
+    if (scene.single_trajectory() && !claims.min_intensity)
         return {false, "invalid: the scene has one ray, one target and no splitter: its "
                        "certificate lists the path's points, not illumination"};
     try {

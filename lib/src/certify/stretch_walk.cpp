@@ -8,7 +8,7 @@
 namespace orthoray::certify {
 
 StretchEnd walk_stretch(const Scene& scene, const Vector& start, const Vector& direction,
-                        const std::function<void(const StretchSegment&)>& visit) {
+                        const std::function<bool(const StretchSegment&)>& visit) {
     const int dim = scene.dim;
     Vector p = start, v = direction;  // the hare: the state being left
     Vector saved_p = p, saved_v = v;  // the tortoise
@@ -17,7 +17,10 @@ StretchEnd walk_stretch(const Scene& scene, const Vector& start, const Vector& d
     StretchEnd end;
     for (;;) {
         const Event e = first_met(scene, p, v);
-        visit(StretchSegment{p, v, e, reflections});
+        if (!visit(StretchSegment{p, v, e, reflections})) {
+            end.kind = StretchEnd::Kind::stopped;
+            return end;
+        }
         if (!e.met) return end; // escape
         if (e.absorbed) {
             end.kind = StretchEnd::Kind::absorbed;

@@ -28,7 +28,9 @@ struct StretchSegment {
 };
 
 struct StretchEnd {
-    enum class Kind { escape, absorbed, branch, cycle };
+    // stopped: the visitor asked to stop (an intensity fallen to the
+    // threshold: nothing after it matters).
+    enum class Kind { escape, absorbed, branch, cycle, stopped };
     Kind kind = Kind::escape;
     // For a branch end: the event point, the direction arriving there, the
     // two or more directions leaving it, and the reflections before it.
@@ -37,7 +39,8 @@ struct StretchEnd {
     std::uint64_t reflections = 0;
 };
 
+// `visit` sees each segment and returns whether to go on.
 StretchEnd walk_stretch(const Scene& scene, const Vector& start, const Vector& direction,
-                        const std::function<void(const StretchSegment&)>& visit);
+                        const std::function<bool(const StretchSegment&)>& visit);
 
 } // namespace orthoray::certify

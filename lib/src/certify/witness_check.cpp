@@ -2,12 +2,14 @@
 #include "certify/witness_check.hpp"
 
 #include "certify/acting_rule.hpp"
+#include "certify/intensity_rule.hpp"
 #include "certify/path_geometry.hpp"
 
 namespace orthoray::certify {
 
-void WitnessCheck::begin(const TargetLine& lit) {
+void WitnessCheck::begin(const TargetLine& lit, const std::optional<Integer>& min_intensity) {
     lit_ = lit;
+    min_intensity_ = min_intensity;
     steps_ = 0;
     changes_ = 0;
     ++witnesses_;
@@ -30,6 +32,10 @@ void WitnessCheck::step(const Vector& point, const Vector& direction) {
             return fail("step 0 is " + show(point, dim) + " " + show(direction, dim) +
                         ", not ray " + lit_.label.ray.get_str() + "'s start " +
                         show(ray.start, dim) + " " + show(ray.direction, dim));
+        if (min_intensity_ && !ray.intensity)
+            return fail("ray " + lit_.label.ray.get_str() +
+                        " has no intensity, which an intensity certificate needs");
+        if (min_intensity_) intensity_ = *ray.intensity;
         p_ = point;
         v_ = direction;
         return;
@@ -49,6 +55,8 @@ void WitnessCheck::step(const Vector& point, const Vector& direction) {
         return fail("step " + std::to_string(k) + " leaves " + show(q, dim) + " along " +
                     show(direction, dim) + ", which the elements there do not allow");
     if (!same(direction, v_, dim)) changes_ += 1;
+    if (min_intensity_)
+        intensity_ = attenuate(intensity_, intensity_factor(scene_, q, v_, direction));
     p_ = point;
     v_ = direction;
 }
@@ -64,6 +72,13 @@ void WitnessCheck::finish() {
     if (changes_ != lit_.label.reflections)
         return fail("the witness changes direction " + changes_.get_str() + " times, not " +
                     lit_.label.reflections.get_str());
+    if (!min_intensity_) return;
+    if (intensity_ != lit_.intensity)
+        return fail("the witness passes the target with intensity " + intensity_.get_str() +
+                    ", not " + lit_.intensity.get_str());
+    if (intensity_ <= *min_intensity_)
+        return fail("the witness's intensity " + intensity_.get_str() +
+                    " is not above min-intensity " + min_intensity_->get_str());
 }
 
 void WitnessCheck::fail(const std::string& what) {

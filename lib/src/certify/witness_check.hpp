@@ -4,6 +4,10 @@
 // state, each step must be the first acting event from the one before with
 // a direction the rules allow there, the target must lie on the segment
 // after the last step, and the direction changes must number the claim.
+// In an intensity certificate the witness also carries its ray's intensity,
+// floored after every event by the checker's own rule (intensity_rule.hpp),
+// and must pass the target with exactly the intensity claimed, above the
+// threshold.
 #pragma once
 
 #include "orthoray/scene.hpp"
@@ -20,7 +24,8 @@ class WitnessCheck {
 public:
     explicit WitnessCheck(const Scene& scene) : scene_(scene) {}
 
-    void begin(const TargetLine& lit);
+    // `min_intensity` set: the witness of an intensity certificate.
+    void begin(const TargetLine& lit, const std::optional<Integer>& min_intensity);
     void step(const Vector& point, const Vector& direction);
     void finish();
 
@@ -38,6 +43,8 @@ private:
     std::uint64_t steps_ = 0;
     Integer changes_;
     Vector p_, v_;
+    std::optional<Integer> min_intensity_;
+    Integer intensity_; // along the witness, in an intensity certificate
     std::uint64_t witnesses_ = 0;
     std::optional<std::string> failure_;
 };

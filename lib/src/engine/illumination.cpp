@@ -14,6 +14,7 @@
 
 #include "engine/branch_search_answer.hpp"
 #include "engine/branch_state_set.hpp"
+#include "engine/branch_witness.hpp"
 #include "engine/lattice_stepper.hpp"
 #include "engine/stretch.hpp"
 
@@ -41,7 +42,6 @@ struct Record {
     std::uint32_t settled : 1;
     std::uint32_t parent; // the branch state whose expansion gave the label
 };
-constexpr std::uint32_t no_parent = std::numeric_limits<std::uint32_t>::max();
 
 // A queue entry; one left behind by a better label later is skipped.
 struct Waiting {
@@ -249,25 +249,10 @@ private:
         }
     }
 
-    // The branch lighting target t, step by step: follow the parents from
-    // its branch state back to a ray's start, then walk the stretches again
-    // forward, each up to the split that gave the next one's state (whose
-    // first step is that split's point and direction), the last up to the
-    // first segment passing the target.
     void witness(std::size_t t, IlluminationObserver& observer) const {
-        std::vector<std::uint32_t> chain;
-        for (std::uint32_t s = best_[t].branch; s != no_parent; s = records_[s].parent)
-            chain.push_back(s);
-        Vector p, v;
-        for (std::size_t i = chain.size(); i-- > 0;) {
-            states_.state(chain[i], p, v);
-            walk_stretch(
-                *stepper_, p, v,
-                [&](const Vector& q, const Vector& u, std::uint64_t, const ReferenceEvent& e) {
-                    observer.step(q, u);
-                    return i > 0 || !stepper_->passes(scene_.targets[t], q, u, e);
-                });
-        }
+        replay_witness(
+            states_, *stepper_, [&](std::uint32_t s) { return records_[s].parent; },
+            best_[t].branch, scene_.targets[t], observer);
     }
 
     const Scene& scene_;

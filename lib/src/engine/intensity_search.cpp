@@ -20,6 +20,7 @@
 
 #include "engine/branch_search_answer.hpp"
 #include "engine/branch_state_set.hpp"
+#include "engine/branch_witness.hpp"
 #include "engine/lattice_stepper.hpp"
 #include "engine/stretch.hpp"
 
@@ -37,6 +38,7 @@ struct Record {
     Integer intensity;
     std::uint64_t reflections; // of the branch that gave the intensity
     std::uint32_t ray;         // from 1
+    std::uint32_t parent;      // the state whose stretch gave it; no_parent at a ray's start
     bool settled;
 };
 
@@ -59,7 +61,15 @@ struct Candidate {
     Integer intensity;
     std::uint32_t ray = 0;
     std::uint64_t reflections = 0;
+    std::uint32_t branch = 0; // the state whose stretch passes the target
 };
+
+// The heap bytes of a big integer's digits, for the byte budget: an
+// intensity of a million digits takes as much room as thousands of states.
+// Counted from the value, so a copy frees what the original was charged.
+std::size_t digit_bytes(const Integer& n) {
+    return mpz_size(n.get_mpz_t()) * sizeof(mp_limb_t);
+}
 
 // floor(intensity * factor): the intensity after an event (intensity >= 0).
 Integer attenuated(const Integer& intensity, const Rational& factor) {
@@ -81,7 +91,9 @@ public:
         } catch (const std::bad_alloc&) {
             limit_ = Limit::memory;
         }
-        return conclude();
+        Answer answer = conclude();
+        if (options_.intensity_observer) report(answer, *options_.intensity_observer);
+        return answer;
     }
 
 private:
@@ -92,7 +104,7 @@ private:
             const Ray& ray = scene_.rays[r];
             if (*ray.intensity <= threshold_) continue; // it lights nothing
             if (!reach(ray.start, ray.direction, *ray.intensity, 0,
-                       static_cast<std::uint32_t>(r + 1))) {
+                       static_cast<std::uint32_t>(r + 1), no_parent)) {
                 limit_ = Limit::memory;
                 return;
             }
@@ -118,6 +130,7 @@ private:
             std::pop_heap(queue_.begin(), queue_.end(), after);
             Waiting w = std::move(queue_.back());
             queue_.pop_back();
+            budget_.freed(digit_bytes(w.intensity));
             const Record& r = records_[w.state];
             if (!r.settled && r.intensity == w.intensity && r.ray == w.ray) return w;
         }
@@ -142,22 +155,29 @@ private:
         return !limit_;
     }
 
-    // Reaches (p, v) with this label; false when the budget refuses room.
+    // Reaches (p, v) with this label from the stretch of `parent`; false
+    // when the budget refuses room (the intensity's digits are counted
+    // twice: the record's copy and the queue's).
     bool reach(const Vector& p, const Vector& v, const Integer& intensity,
-               std::uint64_t reflections, std::uint32_t ray) {
-        if (!budget_.make_room(records_) || !budget_.make_room(queue_)) return false;
+               std::uint64_t reflections, std::uint32_t ray, std::uint32_t parent) {
+        const std::size_t digits = digit_bytes(intensity);
+        if (!budget_.make_room(records_) || !budget_.make_room(queue_) || !budget_.fits(2 * digits))
+            return false;
         const std::optional<BranchStateSet::Inserted> at = states_.insert(p, v);
         if (!at) return false;
         const Waiting entry{intensity, ray, at->index};
         if (at->added) {
-            records_.push_back({intensity, reflections, ray, false});
+            records_.push_back({intensity, reflections, ray, parent, false});
         } else {
             Record& r = records_[at->index];
             if (r.settled || !after(Waiting{r.intensity, r.ray, at->index}, entry)) return true;
+            budget_.freed(digit_bytes(r.intensity));
             r.intensity = intensity;
             r.reflections = reflections;
             r.ray = ray;
+            r.parent = parent;
         }
+        budget_.allocated(2 * digits);
         queue_.push_back(entry);
         std::push_heap(queue_.begin(), queue_.end(), after);
         return true;
@@ -188,7 +208,7 @@ private:
                         (intensity < c.intensity || (intensity == c.intensity && ray >= c.ray)))
                         continue;
                     if (stepper_.passes(scene_.targets[t], q, u, e))
-                        c = {true, intensity, ray, reflections + w};
+                        c = {true, intensity, ray, reflections + w, b};
                 }
                 if (!e.escape && !e.absorbed) {
                     if (e.outgoing.size() == 1)
@@ -206,7 +226,7 @@ private:
                 attenuated(intensity, outgoing_factor(split_acting, end.incoming, out.direction));
             if (child <= threshold_) continue;
             if (!reach(end.point, out.direction, child,
-                       reflections + end.reflections + (out.reflection ? 1 : 0), ray)) {
+                       reflections + end.reflections + (out.reflection ? 1 : 0), ray, b)) {
                 limit_ = Limit::memory;
                 return false;
             }
@@ -242,6 +262,41 @@ private:
         return answer;
     }
 
+    // The evidence, for a certificate (docs/certificates.md, "The intensity
+    // question"): every expanded branch state with its intensity, final
+    // when it was expanded, then each target's verdict, with a witness when
+    // it is lit. States left waiting when every target's best was final are
+    // not listed: no branch through them can pass a target more intensely
+    // than the target's best, which is what the checker asks of them.
+    void report(const Answer& answer, IntensityObserver& observer) const {
+        Vector p, v;
+        for (std::uint32_t s = 0; s < states_.size(); ++s) {
+            if (!records_[s].settled) continue;
+            states_.state(s, p, v);
+            observer.branch(p, v, records_[s].intensity);
+        }
+        for (std::size_t t = 0; t < answer.targets.size(); ++t) {
+            switch (answer.targets[t].status) {
+            case TargetAnswer::Status::lit:
+                observer.lit(t + 1, best_[t].reflections, best_[t].ray, best_[t].intensity);
+                witness(t, observer);
+                break;
+            case TargetAnswer::Status::unlit:
+                observer.unlit(t + 1);
+                break;
+            case TargetAnswer::Status::unknown:
+                observer.unknown(t + 1);
+                break;
+            }
+        }
+    }
+
+    void witness(std::size_t t, IntensityObserver& observer) const {
+        replay_witness(
+            states_, stepper_, [&](std::uint32_t s) { return records_[s].parent; }, best_[t].branch,
+            scene_.targets[t], observer);
+    }
+
     const Scene& scene_;
     const SolveOptions& options_;
     const EventStepper& stepper_;
@@ -262,7 +317,7 @@ void check(const Scene& scene, const SolveOptions& options) {
     if (!options.min_intensity || *options.min_intensity < 0)
         throw std::invalid_argument("solve_intensity: min_intensity must be a natural number");
     if (options.illumination_observer || options.induction_observer || options.path)
-        throw std::invalid_argument("the intensity search writes no certificate");
+        throw std::invalid_argument("the intensity search reports to an IntensityObserver only");
     for (const Ray& ray : scene.rays)
         if (!ray.intensity)
             throw UnsupportedScene("the intensity question needs an intensity on every ray (the "
