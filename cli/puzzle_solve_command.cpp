@@ -108,8 +108,8 @@ std::optional<Clock::time_point> deadline_of(const PuzzleSolveArgs& args) {
 }
 
 // The search and its report. `stop` and `nodes` are the flag the deadline
-// and signals set and the progress line's count; with MPI, `coordinator`
-// runs the pieces on the ranks, and `ranks` is their number.
+// and signals set and the progress line's count; with MPI, `runner` runs
+// the pieces on the ranks, and `ranks` is their number (0 without).
 int search_level(const PuzzleSolveArgs& args, const CLI::Option* max_nodes, std::atomic<bool>& stop,
                  std::atomic<std::uint64_t>& nodes, const LazorPieceRunner* runner,
                  unsigned ranks) {
