@@ -105,7 +105,10 @@ PieceCoordinator::run(const LazorSearchPieces& pieces) {
             const int rank = idle_.back();
             idle_.pop_back();
             busy_.emplace_back(rank, index);
-            send(head + std::to_string(index) + '\n' + text, rank, piece);
+            std::string message = head;
+            message += std::to_string(index) + '\n';
+            message += text;
+            send(message, rank, piece);
         }
         std::optional<Arrived> arrived;
         if (!take_request(&arrived)) {

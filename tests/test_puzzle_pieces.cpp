@@ -145,6 +145,14 @@ TEST_CASE("a search and its piece results survive their texts", "[puzzle][pieces
                   lazor_piece_text(r));
         }
     }
+    // A leaf of the largest grid (64 x 64 cells) in one piece of text.
+    LazorPieceResult big;
+    big.end = LazorPieceResult::End::complete;
+    big.nodes = 123456789012;
+    big.solutions = "98765432109876543210987654321";
+    big.first = std::string(64 * 64, '4') + "/1/0/2/4000";
+    CHECK(lazor_piece_text(lazor_piece_from_text(lazor_piece_text(big))) == lazor_piece_text(big));
+    CHECK(lazor_piece_from_text(lazor_piece_text(big)).first == big.first);
     // The generator's search carries its intended placement along.
     const LazorLevel level = load_lazor_level(source_path("instances/puzzles/reflect-7x7.bff"));
     const LazorLevel intended = *solve_lazor(level).placed;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -173,16 +174,15 @@ std::string LazorSearchPieces::to_text() const {
 
 LazorSearchPieces LazorSearchPieces::from_text(std::string_view text) {
     const std::size_t line_end = text.find('\n');
-    const std::string header(text.substr(0, line_end));
+    std::istringstream header(std::string(text.substr(0, line_end)));
+    std::string word, max_text;
     char mode = 0;
-    char max_text[32] = {};
     std::size_t length = 0;
-    if (line_end == std::string_view::npos ||
-        std::sscanf(header.c_str(), "lazor-search %c %31s %zu", &mode, max_text, &length) != 3 ||
-        line_end + 1 + length > text.size())
+    if (line_end == std::string_view::npos || !(header >> word >> mode >> max_text >> length) ||
+        word != "lazor-search" || line_end + 1 + length > text.size())
         throw std::invalid_argument("not the text of a Lazor search");
     std::optional<std::uint64_t> max_nodes;
-    if (std::string(max_text) != "-") max_nodes = std::stoull(max_text);
+    if (max_text != "-") max_nodes = std::stoull(max_text);
     LazorLevel level = read_lazor_level(text.substr(line_end + 1, length), "<search>");
     std::optional<LazorLevel> intended;
     if (mode == static_cast<char>(Mode::other))
@@ -200,19 +200,16 @@ std::string lazor_piece_text(const LazorPieceResult& result) {
 }
 
 LazorPieceResult lazor_piece_from_text(std::string_view text) {
-    const std::string s(text);
+    std::istringstream in{std::string(text)};
     char end = 0;
-    unsigned long long nodes = 0;
-    char solutions[4096] = {}, first[4096] = {};
-    if (std::sscanf(s.c_str(), "%c %llu %4095s %4095s", &end, &nodes, solutions, first) != 4)
-        throw std::invalid_argument("not the text of a Lazor piece result");
     LazorPieceResult out;
+    std::string first;
+    if (!(in >> end >> out.nodes >> out.solutions >> first))
+        throw std::invalid_argument("not the text of a Lazor piece result");
     out.end = end == 'c'   ? LazorPieceResult::End::complete
               : end == 'b' ? LazorPieceResult::End::budget
                            : LazorPieceResult::End::stopped;
-    out.nodes = nodes;
-    out.solutions = solutions;
-    if (std::string(first) != "-") out.first = first;
+    if (first != "-") out.first = std::move(first);
     return out;
 }
 
