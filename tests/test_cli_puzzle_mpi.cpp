@@ -1,7 +1,8 @@
 // puzzle solve --mpi and puzzle generate --mpi (docs/puzzles.md, "On many
 // machines"): on two ranks, the bytes one process prints, apart from the
 // time and the jobs count; limits end with exit 3 and nothing claimed; bad
-// input ends every rank with exit 2. Only built with MPI.
+// input ends every rank with exit 2. Only built with MPI; all [slow], as
+// each mpirun takes about half a second to start.
 #ifdef ORTHORAY_MPI
 #include "support/lazor_levels.hpp"
 #include "support/run_cli.hpp"
@@ -46,7 +47,8 @@ std::string without_timings(const std::string& text) {
 
 } // namespace
 
-TEST_CASE("puzzle solve --mpi on two ranks prints what one process prints", "[puzzle][cli][mpi]") {
+TEST_CASE("puzzle solve --mpi on two ranks prints what one process prints",
+          "[puzzle][cli][mpi][slow]") {
     // Each with the options it tests: a first solution, counts (text and
     // JSON), public levels. (The unsolvable one is with the limits below.)
     std::vector<std::pair<std::string, std::string>> runs;
@@ -73,8 +75,8 @@ TEST_CASE("puzzle solve --mpi on two ranks prints what one process prints", "[pu
     }
 }
 
-// [slow]: mpirun takes about two seconds more to end a job whose rank 0
-// exits nonzero (Open MPI 4.1 aborts the job then), and each run here does.
+// Each run here costs mpirun's start (about half a second) and two seconds
+// more, since Open MPI 4.1 aborts a job whose rank 0 exits nonzero.
 TEST_CASE("puzzle solve --mpi proves unsolvable, and stops at its limits with nothing claimed",
           "[puzzle][cli][mpi][limits][slow]") {
     const TempDir dir;
@@ -113,7 +115,7 @@ TEST_CASE("puzzle solve --mpi proves unsolvable, and stops at its limits with no
 }
 
 TEST_CASE("puzzle generate --mpi on two ranks writes the level one process writes",
-          "[puzzle][cli][mpi][generate]") {
+          "[puzzle][cli][mpi][generate][slow]") {
     const TempDir dir;
     for (const std::string args :
          {"--size 7x7 --blocks A4,C1 --lasers 1 --points 8 --seed 7",

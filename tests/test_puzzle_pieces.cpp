@@ -65,7 +65,7 @@ std::vector<std::optional<LazorPieceResult>> backwards(const LazorSearchPieces& 
 } // namespace
 
 TEST_CASE("merged pieces give the whole search's first solution and count on every public level",
-          "[puzzle][pieces]") {
+          "[puzzle][pieces][slow]") {
     int compared = 0;
     for (const auto& [name, level] : public_levels()) {
         const puzzle::SubtreeResult whole = whole_search(level, true, whole_search_nodes);
@@ -95,7 +95,7 @@ TEST_CASE("merged pieces give the whole search's first solution and count on eve
 }
 
 TEST_CASE("the generator's search in pieces counts nodes as the search from the root did",
-          "[puzzle][pieces][generate]") {
+          "[puzzle][pieces][generate][slow]") {
     int compared = 0;
     for (const auto& [name, level] : public_levels()) {
         const LazorSolution solved = solve_lazor(level);
