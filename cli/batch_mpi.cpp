@@ -2,10 +2,9 @@
 
 #include "batch_owner.hpp"
 #include "commands.hpp"
+#include "mpi_link.hpp"
 #include "output_file.hpp"
 #include "run_monitor.hpp"
-
-#include <mpi.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,43 +24,6 @@ using Clock = std::chrono::steady_clock;
 // an empty chunk means there is no more work. A result is the instance's
 // Ending as one character, then its line (empty when nothing is recorded).
 enum Tag : int { request = 1, chunk = 2, result = 3 };
-
-// MPI_Init_thread and MPI_Finalize around a run; only the main thread of a
-// rank calls MPI (MPI_THREAD_FUNNELED).
-class MpiSession {
-public:
-    MpiSession() {
-        int provided = 0;
-        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-        MPI_Comm_size(MPI_COMM_WORLD, &size);
-    }
-    ~MpiSession() { MPI_Finalize(); }
-    MpiSession(const MpiSession&) = delete;
-    MpiSession& operator=(const MpiSession&) = delete;
-    int rank = 0, size = 1;
-};
-
-void send(const std::string& bytes, int to, Tag tag) {
-    MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
-}
-
-std::string receive(const MPI_Status& probed) {
-    int count = 0;
-    MPI_Get_count(&probed, MPI_CHAR, &count);
-    std::string bytes(static_cast<std::size_t>(count), '\0');
-    MPI_Recv(bytes.data(), count, MPI_CHAR, probed.MPI_SOURCE, probed.MPI_TAG, MPI_COMM_WORLD,
-             MPI_STATUS_IGNORE);
-    return bytes;
-}
-
-// Any failure ends every rank at once: the results file holds only whole
-// lines, so a --resume run goes on from there.
-[[noreturn]] void abort_all(const char* what, int status) {
-    std::fprintf(stderr, "orthoray: %s\n", what);
-    MPI_Abort(MPI_COMM_WORLD, status);
-    std::_Exit(status);
-}
 
 int coordinate(const BatchArgs& args, int ranks) {
     BatchOwner owner(args, std::max(1u, args.jobs));

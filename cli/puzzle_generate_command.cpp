@@ -1,11 +1,15 @@
 // orthoray puzzle generate: a new Lazor level, with a unique solution unless
 // --any (docs/puzzles.md, "Generation").
 #include "commands.hpp"
+#include "mpi_link.hpp"
 #include "option_checks.hpp"
 #include "orthoray/puzzle.hpp"
+#include "orthoray/puzzle_pieces.hpp"
 #include "output_file.hpp"
+#include "puzzle_mpi.hpp"
 #include "stop_at_once.hpp"
 
+#include <atomic>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -17,7 +21,7 @@ struct PuzzleGenerateArgs {
     std::string size = "5x5", blocks = "A3", difficulty, out;
     int lasers = 1, points = 3, attempts = 500;
     std::uint64_t max_nodes = LazorGenerateOptions{}.max_nodes;
-    bool any = false;
+    bool any = false, mpi = false;
     std::uint64_t seed = 1;
     double timeout = 0;
 };
@@ -64,9 +68,11 @@ std::array<int, 3> parse_blocks(const std::string& text) {
     return counts;
 }
 
-int run(const PuzzleGenerateArgs& args, const CLI::Option* timeout) {
-    stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
+// The generation and its output; with MPI, `runner` spreads the pieces of
+// each search over the ranks.
+int generate(const PuzzleGenerateArgs& args, const LazorPieceRunner* runner) {
     LazorGenerateOptions options;
+    options.runner = runner;
     std::tie(options.width, options.height) = parse_size(args.size);
     options.blocks = parse_blocks(args.blocks);
     options.lasers = args.lasers;
@@ -106,6 +112,33 @@ int run(const PuzzleGenerateArgs& args, const CLI::Option* timeout) {
     return yes;
 }
 
+int run(const PuzzleGenerateArgs& args, const CLI::Option* timeout) {
+    // On every rank: a deadline or signal ends each process at once.
+    stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
+    if (!args.mpi) return generate(args, nullptr);
+#ifdef ORTHORAY_MPI
+    const MpiSession session;
+    if (session.rank != 0) {
+        const std::atomic<bool> never{false};
+        serve_pieces(never);
+        return yes;
+    }
+    PieceCoordinator coordinator(session.size, nullptr, nullptr);
+    const LazorPieceRunner runner = coordinator.runner();
+    try {
+        const int status = generate(args, &runner);
+        coordinator.finish();
+        return status;
+    } catch (...) {
+        coordinator.finish();
+        throw;
+    }
+#else
+    throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
+                     "docs/puzzles.md)");
+#endif
+}
+
 } // namespace
 
 Command add_puzzle_generate(CLI::App& puzzle) {
@@ -142,6 +175,9 @@ Command add_puzzle_generate(CLI::App& puzzle) {
                     "solution, and to count its solutions (default 50000)")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
     cmd->add_option("-o,--output", args->out, "write the level here instead of to stdout");
+    cmd->add_flag("--mpi", args->mpi,
+                  "spread each search over the ranks of 'mpirun -n P orthoray puzzle generate "
+                  "... --mpi': the same level, written by rank 0 (docs/puzzles.md)");
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the generation");
     return [args, timeout] { return run(*args, timeout); };
 }

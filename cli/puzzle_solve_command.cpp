@@ -1,14 +1,17 @@
 // orthoray puzzle solve LEVEL.bff: find a placement of the level's blocks that
 // lights every point (docs/puzzles.md, "The search").
 #include "commands.hpp"
+#include "mpi_link.hpp"
 #include "option_checks.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/puzzle.hpp"
+#include "orthoray/puzzle_pieces.hpp"
 #include "orthoray/render.hpp"
 #include "orthoray/solve.hpp"
 #include "output_file.hpp"
 #include "phase_progress.hpp"
 #include "puzzle_json.hpp"
+#include "puzzle_mpi.hpp"
 #include "run_monitor.hpp"
 #include "stop_watcher.hpp"
 
@@ -25,7 +28,7 @@ namespace {
 
 struct PuzzleSolveArgs {
     std::string level, out, picture;
-    bool json = false, all = false, quiet = false;
+    bool json = false, all = false, quiet = false, mpi = false;
     unsigned jobs = 0;
     double timeout = 0;
     std::uint64_t max_nodes = 0;
@@ -98,12 +101,19 @@ void write_picture(const LazorLevel& solved, const PuzzleSolveArgs& args, Output
     out.commit();
 }
 
-int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
-    const Clock::time_point begin = Clock::now();
-    std::optional<Clock::time_point> deadline;
-    if (args.timeout > 0)
-        deadline = begin + std::chrono::duration_cast<std::chrono::nanoseconds>(
-                               std::chrono::duration<double>(args.timeout));
+std::optional<Clock::time_point> deadline_of(const PuzzleSolveArgs& args) {
+    if (args.timeout <= 0) return std::nullopt;
+    return Clock::now() + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                              std::chrono::duration<double>(args.timeout));
+}
+
+// The search and its report. `stop` and `nodes` are the flag the deadline
+// and signals set and the progress line's count; with MPI, `runner` runs
+// the pieces on the ranks, and `ranks` is their number (0 without).
+int search_level(const PuzzleSolveArgs& args, const CLI::Option* max_nodes, std::atomic<bool>& stop,
+                 std::atomic<std::uint64_t>& nodes, const LazorPieceRunner* runner,
+                 unsigned ranks) {
+    const std::optional<Clock::time_point> deadline = deadline_of(args);
     const InterruptGuard interrupts;
     const LazorLevel level = load_lazor_level(args.level); // bad input ends here
     // Refuse a bad output path before searching.
@@ -115,9 +125,9 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
         picture.emplace(args.picture, std::vector<std::string>{args.level, args.out},
                         "the picture");
 
-    std::atomic<bool> stop{false};
     LazorSolveOptions options;
     options.jobs = args.jobs;
+    options.runner = runner;
     options.all = args.all;
     options.stop = &stop;
     if (max_nodes->count() > 0) options.max_nodes = args.max_nodes;
@@ -126,7 +136,6 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
     const Clock::time_point begin_search = Clock::now();
     {
         // The line shows the nodes the search has visited (docs/limits.md).
-        std::atomic<std::uint64_t> nodes{0};
         options.progress = &nodes;
         PhaseProgress progress("puzzle solve", !args.quiet);
         progress.phase("searching " + args.level, &nodes, "nodes");
@@ -139,8 +148,9 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
     const std::string limit = solution.limit == "nodes" ? "nodes"
                               : interrupted             ? "interrupt"
                                                         : "time";
-    const unsigned jobs =
-        args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned jobs = ranks > 0       ? ranks
+                          : args.jobs > 0 ? args.jobs
+                                          : std::max(1u, std::thread::hardware_concurrency());
     if (out && solution.placed) {
         out->stream() << write_lazor_level(*solution.placed,
                                            "solved by orthoray puzzle solve: " + args.level);
@@ -160,6 +170,35 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
         break;
     }
     return Exit::limit;
+}
+
+int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
+    std::atomic<bool> stop{false};
+    std::atomic<std::uint64_t> nodes{0};
+    if (!args.mpi) return search_level(args, max_nodes, stop, nodes, nullptr, 0);
+#ifdef ORTHORAY_MPI
+    const MpiSession session;
+    if (session.rank != 0) { // a worker: its own deadline and signals stop its pieces
+        const InterruptGuard interrupts;
+        const StopWatcher watcher(stop, deadline_of(args));
+        serve_pieces(stop);
+        return yes;
+    }
+    PieceCoordinator coordinator(session.size, &stop, &nodes);
+    const LazorPieceRunner runner = coordinator.runner();
+    try {
+        const int status = search_level(args, max_nodes, stop, nodes, &runner,
+                                        static_cast<unsigned>(session.size));
+        coordinator.finish();
+        return status;
+    } catch (...) {
+        coordinator.finish();
+        throw;
+    }
+#else
+    throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
+                     "docs/puzzles.md)");
+#endif
 }
 
 } // namespace
@@ -190,6 +229,9 @@ Command add_puzzle_solve(CLI::App& puzzle) {
                     "point gold when lit (as 'orthoray render' draws scenes)");
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
         ->check(CLI::Range(1u, 1024u));
+    cmd->add_flag("--mpi", args->mpi,
+                  "spread the search over the ranks of 'mpirun -n P orthoray puzzle solve ... "
+                  "--mpi': the same answer, printed by rank 0 (docs/puzzles.md)");
     cmd->add_flag("--all", args->all,
                   "search the whole space and count every placement that lights every point");
     cmd->add_option("--timeout", args->timeout,

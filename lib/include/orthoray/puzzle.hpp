@@ -10,6 +10,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -84,6 +85,14 @@ LazorLevel apply_lazor_placement(const LazorLevel& level, const LazorLevel& solv
 // file position, each point a target. Blocks still to place are not in it.
 Scene lazor_scene(const LazorLevel& level);
 
+// The search in independent pieces, and what runs them
+// (orthoray/puzzle_pieces.hpp): threads by default, MPI ranks from the
+// command line.
+struct LazorPieceResult;
+class LazorSearchPieces;
+using LazorPieceRunner =
+    std::function<std::vector<std::optional<LazorPieceResult>>(const LazorSearchPieces&)>;
+
 struct LazorSolveOptions {
     unsigned jobs = 1;                       // threads; 0 means one per core
     bool all = false;                        // count every solution
@@ -92,6 +101,9 @@ struct LazorSolveOptions {
     // When set, every search node visited adds 1 (relaxed), for a progress
     // line read from another thread.
     std::atomic<std::uint64_t>* progress = nullptr;
+    // When set, runs the pieces instead of `jobs` threads (stop, progress
+    // and jobs are then its business); the answer is the same.
+    const LazorPieceRunner* runner = nullptr;
 };
 
 struct LazorSolution {
@@ -103,7 +115,9 @@ struct LazorSolution {
     // With `all`: the number of placements that light every point (exact,
     // as a decimal string: it can exceed 64 bits on big open grids).
     std::string solutions;
-    std::uint64_t nodes = 0; // search nodes visited
+    // Search nodes a one-thread search visits to its answer (at a limit:
+    // every node visited).
+    std::uint64_t nodes = 0;
     // limit: which limit ("nodes" or "stop").
     std::string limit;
     // solved: for each point in file order, what solve() said of it on the
@@ -133,6 +147,9 @@ struct LazorGenerateOptions {
     // first to second search nodes, both included: the difficulty.
     std::pair<std::uint64_t, std::uint64_t> difficulty{0,
                                                        std::numeric_limits<std::uint64_t>::max()};
+    // When set, runs the pieces of every search (one thread without it);
+    // the level is the same.
+    const LazorPieceRunner* runner = nullptr;
 };
 
 struct LazorGenerated {

@@ -235,12 +235,13 @@ constexpr int closed_share_percent = 50;
 // placement. False when neither can be done, the points run out, the closed
 // cells would pass their share, or a search reaches `max_nodes`.
 bool cut_other_solutions(LazorLevel& level, LazorLevel& placed, PointChooser& points,
-                         std::uint64_t max_nodes) {
+                         std::uint64_t max_nodes, const LazorPieceRunner* runner) {
     const std::vector<bool> entered = entered_cells(placed);
     const std::size_t most_closed = level.cells.size() * closed_share_percent / 100;
     while (true) {
         level.points = placed.points = points.chosen();
-        const puzzle::OtherSolution other = puzzle::find_other_solution(level, placed, max_nodes);
+        const puzzle::OtherSolution other =
+            puzzle::find_other_solution(level, placed, max_nodes, runner);
         if (other.status == puzzle::OtherSolution::Status::none) return true;
         if (other.status == puzzle::OtherSolution::Status::limit) return false;
         if (points.add_point_against(other.leaf.cells)) continue;
@@ -306,7 +307,8 @@ std::optional<LazorGenerated> generate_lazor_level(const LazorGenerateOptions& o
         if (!place_on_paths(placed, kinds, rng)) continue;
         PointChooser chooser(placed, options.points, rng);
         if (!chooser.witness_blocks()) continue;
-        if (options.unique && !cut_other_solutions(level, placed, chooser, options.max_nodes))
+        if (options.unique &&
+            !cut_other_solutions(level, placed, chooser, options.max_nodes, options.runner))
             continue;
         if (!chooser.fill_to(options.points)) continue;
         level.points = placed.points = chooser.chosen();
@@ -314,6 +316,7 @@ std::optional<LazorGenerated> generate_lazor_level(const LazorGenerateOptions& o
         LazorSolveOptions check;
         check.all = true;
         check.max_nodes = options.max_nodes;
+        check.runner = options.runner;
         const LazorSolution s = solve_lazor(level, check);
         if (s.status != LazorSolution::Status::solved) continue; // a limit: too hard to count
         if (options.unique && s.solutions != "1") continue;

@@ -1,51 +1,19 @@
-// solve_lazor(): the placement search over threads (docs/puzzles.md, "The
-// search"). The top of the search tree is split into subtrees in search
-// order, the same split whatever the number of threads; threads take them in
-// order. The answer is the first solution of the first subtree that has one,
-// so it does not depend on which thread finished first.
+// solve_lazor(): the placement search in pieces (orthoray/puzzle_pieces.hpp,
+// docs/puzzles.md, "The search"), on threads or whatever runner the caller
+// gives. The answer is the first solution of the first piece that has one,
+// merged in search order, so it does not depend on who finished first.
 #include "orthoray/puzzle.hpp"
+#include "orthoray/puzzle_pieces.hpp"
 #include "orthoray/solve.hpp"
 
 #include "puzzle/placement_search.hpp"
 
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
 namespace orthoray {
 namespace {
 
 using puzzle::Board;
-using puzzle::Decision;
-using puzzle::PlacementSearch;
-using puzzle::SubtreeResult;
-
-// Enough subtrees to keep every core busy while one runs long; the split
-// does not depend on the number of threads.
-constexpr std::size_t split_target = 64;
-
-std::vector<std::vector<Decision>> split(PlacementSearch& search) {
-    std::vector<std::vector<Decision>> tasks{{}};
-    while (tasks.size() < split_target) {
-        std::vector<std::vector<Decision>> next;
-        bool expanded = false;
-        for (const std::vector<Decision>& path : tasks) {
-            const std::vector<Decision> children = search.children(path);
-            if (children.empty()) {
-                next.push_back(path); // a leaf or pruned: searched as it is
-                continue;
-            }
-            expanded = true;
-            for (const Decision& d : children) {
-                next.push_back(path);
-                next.back().push_back(d);
-            }
-        }
-        tasks = std::move(next);
-        if (!expanded) break;
-    }
-    return tasks;
-}
 
 // The level with the blocks of a solution leaf: the decided cells as they
 // are, and the blocks left on the undecided cells in row-major order,
@@ -91,76 +59,33 @@ std::vector<TargetAnswer> recheck(const LazorLevel& placed) {
 } // namespace
 
 LazorSolution solve_lazor(const LazorLevel& level, const LazorSolveOptions& options) {
-    const unsigned jobs =
-        options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
-    std::atomic<std::uint64_t> nodes{0};
-    std::atomic<bool> node_limit{false};
-    // Asked once a search node.
-    auto stop = [&] {
-        if (options.progress) options.progress->fetch_add(1, std::memory_order_relaxed);
-        if (options.stop && options.stop->load(std::memory_order_relaxed)) return true;
-        if (!options.max_nodes) return false;
-        if (nodes.fetch_add(1, std::memory_order_relaxed) < *options.max_nodes) return false;
-        node_limit = true;
-        return true;
-    };
-
-    PlacementSearch splitter(level, options.all, [] { return false; });
-    const std::vector<std::vector<Decision>> tasks = split(splitter);
-    std::vector<SubtreeResult> results(tasks.size());
-    // Without --all, the least subtree index holding a solution so far:
-    // later subtrees cannot change the answer and stop.
-    std::atomic<std::size_t> best{tasks.size()};
-    std::atomic<std::size_t> next_task{0};
-    auto worker = [&] {
-        std::size_t current = 0;
-        PlacementSearch search(level, options.all, [&] {
-            return stop() || (!options.all && best.load(std::memory_order_relaxed) < current);
-        });
-        while (true) {
-            current = next_task.fetch_add(1);
-            if (current >= tasks.size()) return;
-            if (!options.all && best.load() < current) continue;
-            results[current] = search.search(tasks[current]);
-            if (!options.all && results[current].first) {
-                std::size_t seen = best.load();
-                while (current < seen && !best.compare_exchange_weak(seen, current)) {
-                }
-            }
-        }
-    };
-    std::vector<std::thread> threads;
-    for (unsigned t = 1; t < std::min<std::size_t>(jobs, tasks.size()); ++t)
-        threads.emplace_back(worker);
-    worker();
-    for (std::thread& t : threads) t.join();
-
+    const LazorSearchPieces pieces(level, options.all, options.max_nodes);
+    const std::vector<std::optional<LazorPieceResult>> results =
+        options.runner ? (*options.runner)(pieces)
+                       : run_lazor_pieces(pieces, options.jobs, options.stop, options.progress);
     LazorSolution solution;
-    Integer count = 0;
-    bool complete = true;
-    for (const SubtreeResult& r : results) solution.nodes += r.nodes;
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
-        const SubtreeResult& r = results[i];
-        if (!options.all && solution.placed) break;
-        if (!r.complete) {
-            complete = false;
-            if (!options.all) break; // an earlier subtree may hold the first solution
-            continue;
-        }
-        if (r.first && !solution.placed) solution.placed = placement_of(level, *r.first);
-        count += r.solutions;
+    std::optional<LazorSearchOutcome> outcome = pieces.outcome(results);
+    if (!outcome) { // the runner was stopped before the pieces that decide
+        outcome.emplace();
+        outcome->limit = "stop";
+        for (const std::optional<LazorPieceResult>& r : results)
+            if (r) outcome->nodes += r->nodes;
     }
-    if (!complete) {
+    solution.nodes = outcome->nodes;
+    switch (outcome->status) {
+    case LazorSearchOutcome::Status::limit:
         solution.status = LazorSolution::Status::limit;
-        solution.limit = node_limit ? "nodes" : "stop";
-        solution.placed.reset();
+        solution.limit = outcome->limit;
         return solution;
-    }
-    if (options.all) solution.solutions = count.get_str();
-    if (!solution.placed) {
+    case LazorSearchOutcome::Status::none:
+        solution.solutions = outcome->solutions;
         solution.status = LazorSolution::Status::unsolvable;
         return solution;
+    case LazorSearchOutcome::Status::found:
+        break;
     }
+    solution.solutions = outcome->solutions;
+    solution.placed = placement_of(level, puzzle::board_from_text(outcome->first));
     solution.points = recheck(*solution.placed);
     solution.status = LazorSolution::Status::solved;
     return solution;

@@ -1,11 +1,7 @@
 #include "puzzle/other_solution.hpp"
 
 namespace orthoray::puzzle {
-namespace {
 
-// Whether the leaf's placements are `intended` and nothing else: one
-// arrangement of the blocks left (none left, or one kind filling every
-// undecided cell), which agrees with `intended` on every open cell.
 bool only_intended(const LazorLevel& level, const LazorLevel& intended, const Board& leaf) {
     if (arrangements(leaf) != 1) return false;
     Content filler = empty;
@@ -21,21 +17,25 @@ bool only_intended(const LazorLevel& level, const LazorLevel& intended, const Bo
     return true;
 }
 
-} // namespace
-
 OtherSolution find_other_solution(const LazorLevel& level, const LazorLevel& intended,
-                                  std::uint64_t max_nodes) {
-    std::uint64_t visited = 0;
-    PlacementSearch search(level, false, [&] { return visited++ >= max_nodes; });
-    search.skip_solutions([&](const Board& leaf) { return only_intended(level, intended, leaf); });
-    SubtreeResult result = search.search({});
+                                  std::uint64_t max_nodes, const LazorPieceRunner* runner) {
+    const LazorSearchPieces pieces = LazorSearchPieces::other_than(level, intended, max_nodes);
+    const std::vector<std::optional<LazorPieceResult>> results =
+        runner ? (*runner)(pieces) : run_lazor_pieces(pieces, 1);
+    const std::optional<LazorSearchOutcome> outcome = pieces.outcome(results);
     OtherSolution out;
-    out.nodes = result.nodes;
-    if (result.first) {
+    if (!outcome) return out; // the runner was stopped: a limit
+    out.nodes = outcome->nodes;
+    switch (outcome->status) {
+    case LazorSearchOutcome::Status::found:
         out.status = OtherSolution::Status::found;
-        out.leaf = std::move(*result.first);
-    } else {
-        out.status = result.complete ? OtherSolution::Status::none : OtherSolution::Status::limit;
+        out.leaf = board_from_text(outcome->first);
+        break;
+    case LazorSearchOutcome::Status::none:
+        out.status = OtherSolution::Status::none;
+        break;
+    case LazorSearchOutcome::Status::limit:
+        break;
     }
     return out;
 }

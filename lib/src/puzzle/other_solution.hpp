@@ -5,6 +5,7 @@
 // not) or which cell to close, until no other placement is left.
 #pragma once
 
+#include "orthoray/puzzle_pieces.hpp"
 #include "puzzle/placement_search.hpp"
 
 #include <cstdint>
@@ -20,11 +21,18 @@ struct OtherSolution {
     std::uint64_t nodes = 0;
 };
 
+// Whether the leaf's placements are `intended` and nothing else: one
+// arrangement of the blocks left (none left, or one kind filling every
+// undecided cell), which agrees with `intended` on every open cell.
+bool only_intended(const LazorLevel& level, const LazorLevel& intended, const Board& leaf);
+
 // Searches `level` (its blocks still to place) for a solution leaf other
 // than the one holding exactly `intended` (the same level with the blocks
-// placed). `none` proves `intended` is the level's only solution; `limit`
-// says `max_nodes` ran out first.
+// placed), in pieces (orthoray/puzzle_pieces.hpp) run by `runner`, or on
+// this thread without one: the same answer either way. `none` proves
+// `intended` is the level's only solution; `limit` says `max_nodes`
+// (counted as one search from the root counts them) ran out first.
 OtherSolution find_other_solution(const LazorLevel& level, const LazorLevel& intended,
-                                  std::uint64_t max_nodes);
+                                  std::uint64_t max_nodes, const LazorPieceRunner* runner);
 
 } // namespace orthoray::puzzle

@@ -1,5 +1,8 @@
 #include "puzzle/placement_search.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace orthoray::puzzle {
 
 void Board::apply(const Decision& d) {
@@ -36,6 +39,34 @@ Integer arrangements(const Board& board) {
         cells -= static_cast<unsigned long>(count);
     }
     return ways;
+}
+
+std::string board_text(const Board& board) {
+    std::string out;
+    for (const Content c : board.cells) out += static_cast<char>('0' + c);
+    for (const int count : board.remaining) out += '/' + std::to_string(count);
+    return out + '/' + std::to_string(board.undecided_cells);
+}
+
+Board board_from_text(std::string_view text) {
+    Board board;
+    std::size_t at = 0;
+    for (; at < text.size() && text[at] != '/'; ++at) {
+        if (text[at] < '0' || text[at] > '0' + undecided)
+            throw std::invalid_argument("a board's text holds a bad cell");
+        board.cells.push_back(static_cast<Content>(text[at] - '0'));
+    }
+    std::array<int, 4> counts{};
+    for (int& count : counts) {
+        if (at >= text.size() || text[at] != '/')
+            throw std::invalid_argument("a board's text lacks its counts");
+        const std::size_t end = std::min(text.find('/', at + 1), text.size());
+        count = std::stoi(std::string(text.substr(at + 1, end - at - 1)));
+        at = end;
+    }
+    board.remaining = {counts[0], counts[1], counts[2]};
+    board.undecided_cells = counts[3];
+    return board;
 }
 
 PlacementSearch::PlacementSearch(const LazorLevel& level, bool count_all,

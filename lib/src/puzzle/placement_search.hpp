@@ -12,6 +12,8 @@
 #include <atomic>
 #include <functional>
 #include <optional>
+#include <string>
+#include <string_view>
 
 namespace orthoray::puzzle {
 
@@ -81,5 +83,10 @@ private:
 
 // The number of ways to put the blocks left on the undecided cells.
 Integer arrangements(const Board& board);
+
+// A board as text without spaces (one digit a cell, then the blocks left),
+// for a piece's result sent to another process, and back.
+std::string board_text(const Board& board);
+Board board_from_text(std::string_view text);
 
 } // namespace orthoray::puzzle
