@@ -234,10 +234,10 @@ std::size_t isolate(std::vector<RawPieceOn<Num>>& pieces, const Num& c) {
 } // namespace
 
 template <class Num>
-IntervalExchange finish_exchange(const Num& size, const Num& modulus,
-                                 std::vector<Transversal> transversals,
-                                 std::vector<RawPieceOn<Num>> pieces, const Num& raw_first,
-                                 const std::vector<Num>& raw_hits, const lattice::SetupPoll& poll) {
+ExchangeOn<Num>
+finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal> transversals,
+                   std::vector<RawPieceOn<Num>> pieces, const Num& raw_first,
+                   const std::vector<Num>& raw_hits, const lattice::SetupPoll& poll) {
     using Piece = RawPieceOn<Num>;
     const Num& n = size;
     std::sort(pieces.begin(), pieces.end(),
@@ -302,56 +302,77 @@ IntervalExchange finish_exchange(const Num& size, const Num& modulus,
     // Rotate so that x is 0: the pieces in domain order from x's on, then
     // those before it (no sort needed); an image that wraps around is cut
     // in two.
-    IntervalExchange exchange;
+    ExchangeOn<Num> exchange;
     exchange.pieces.reserve(closed.size() + 1);
     const auto first = std::find_if(closed.begin(), closed.end(),
                                     [&](const Piece& p) { return p.start == raw_first; });
     std::rotate(closed.begin(), first, closed.end());
     for (Piece& p : closed) {
         poll();
-        // On Num, then once into the public integers.
-        Num start = floor_mod(Num(p.start - raw_first), n);
-        Num image = floor_mod(Num(p.image - raw_first), n);
-        Num length = std::move(p.length);
-        auto push = [&](const Num& s, const Num& l, const Num& i) {
-            ExchangePiece q;
-            q.start = lattice::to_integer(s);
-            q.length = lattice::to_integer(l);
-            q.image = lattice::to_integer(i);
-            q.kind = p.kind;
-            q.hit = p.hit;
-            exchange.pieces.push_back(std::move(q));
-        };
-        if (image + length > n) {
-            const Num head = n - image;
-            push(start, head, image);
-            push(Num(start + head), Num(length - head), Num(0));
-        } else {
-            push(start, length, image);
+        Piece q = std::move(p);
+        q.start = floor_mod(Num(q.start - raw_first), n);
+        q.image = floor_mod(Num(q.image - raw_first), n);
+        std::optional<Piece> rest;
+        if (q.image + q.length > n) {
+            rest = q;
+            const Num head = n - q.image;
+            rest->start += head;
+            rest->length -= head;
+            rest->image = 0;
+            q.length = head;
         }
+        exchange.pieces.push_back(std::move(q));
+        if (rest) exchange.pieces.push_back(std::move(*rest));
     }
     if (exchange.pieces.front().start != 0 || exchange.pieces.front().length != 1)
         throw std::logic_error("x is not a piece of its own");
-    exchange.modulus = lattice::to_integer(modulus);
-    exchange.size = lattice::to_integer(n);
+    exchange.modulus = modulus;
+    exchange.size = n;
     exchange.transversals = std::move(transversals);
     return exchange;
+}
+
+template <class Num>
+IntervalExchange to_public(const ExchangeOn<Num>& exchange) {
+    using lattice::to_integer;
+    IntervalExchange out;
+    for (int j = 0; j < 2; ++j) out.scale[j] = exchange.scale[j];
+    out.modulus = to_integer(exchange.modulus);
+    out.transversals = exchange.transversals;
+    out.first_transversal = exchange.first_transversal;
+    out.first_index = to_integer(exchange.first_index);
+    out.size = to_integer(exchange.size);
+    out.pieces.reserve(exchange.pieces.size());
+    for (const RawPieceOn<Num>& p : exchange.pieces) {
+        ExchangePiece q;
+        q.start = to_integer(p.start);
+        q.length = to_integer(p.length);
+        q.image = to_integer(p.image);
+        q.kind = p.kind;
+        q.hit = p.hit;
+        out.pieces.push_back(std::move(q));
+    }
+    return out;
 }
 
 template class ExchangeLayout<std::int64_t>;
 template class ExchangeLayout<lattice::int128_t>;
 template class ExchangeLayout<Integer>;
-template IntervalExchange finish_exchange(const std::int64_t&, const std::int64_t&,
-                                          std::vector<Transversal>,
-                                          std::vector<RawPieceOn<std::int64_t>>,
-                                          const std::int64_t&, const std::vector<std::int64_t>&,
-                                          const lattice::SetupPoll&);
-template IntervalExchange
-finish_exchange(const lattice::int128_t&, const lattice::int128_t&, std::vector<Transversal>,
-                std::vector<RawPieceOn<lattice::int128_t>>, const lattice::int128_t&,
-                const std::vector<lattice::int128_t>&, const lattice::SetupPoll&);
-template IntervalExchange finish_exchange(const Integer&, const Integer&, std::vector<Transversal>,
-                                          std::vector<RawPieceOn<Integer>>, const Integer&,
-                                          const std::vector<Integer>&, const lattice::SetupPoll&);
+template ExchangeOn<std::int64_t>
+finish_exchange_on(const std::int64_t&, const std::int64_t&, std::vector<Transversal>,
+                   std::vector<RawPieceOn<std::int64_t>>, const std::int64_t&,
+                   const std::vector<std::int64_t>&, const lattice::SetupPoll&);
+template IntervalExchange to_public(const ExchangeOn<std::int64_t>&);
+template ExchangeOn<lattice::int128_t>
+finish_exchange_on(const lattice::int128_t&, const lattice::int128_t&, std::vector<Transversal>,
+                   std::vector<RawPieceOn<lattice::int128_t>>, const lattice::int128_t&,
+                   const std::vector<lattice::int128_t>&, const lattice::SetupPoll&);
+template IntervalExchange to_public(const ExchangeOn<lattice::int128_t>&);
+template ExchangeOn<Integer> finish_exchange_on(const Integer&, const Integer&,
+                                                std::vector<Transversal>,
+                                                std::vector<RawPieceOn<Integer>>, const Integer&,
+                                                const std::vector<Integer>&,
+                                                const lattice::SetupPoll&);
+template IntervalExchange to_public(const ExchangeOn<Integer>&);
 
 } // namespace orthoray::induction

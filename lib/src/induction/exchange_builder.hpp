@@ -45,6 +45,13 @@ using lattice::floor_mod;
 // int64_t, __int128 and GMP integers whose limit (lattice_int.hpp: 2^59,
 // 2^123) exceeds both B and that count.
 ArithmeticUsed exchange_arithmetic(const lattice::LatticeScene& scene);
+// What the build runs on: that, or the tables' integers Int if wider
+// (SolveOptions::arithmetic forces wider ones, and the tests run every path
+// so).
+template <class Int>
+ArithmeticUsed build_arithmetic(const lattice::LatticeScene& scene) {
+    return std::max(exchange_arithmetic(scene), lattice::arithmetic_used(Int{}));
+}
 
 // A transversal (orthoray/exchange.hpp) on the build's integers.
 template <class Num>
@@ -129,22 +136,47 @@ struct RawPieceOn {
 };
 using RawPiece = RawPieceOn<Integer>;
 
+// An exchange on the build's integers: IntervalExchange's data with the
+// pieces as the build made them (RawPieceOn, rotated so that x is 0 and
+// sorted by start), for the induction to read without converting each
+// number to GMP and back.
+template <class Num>
+struct ExchangeOn {
+    Num size, modulus;
+    std::vector<RawPieceOn<Num>> pieces;
+    std::vector<Transversal> transversals;
+    std::size_t first_transversal = 0;
+    Num first_index = 0;
+    Integer scale[2];
+};
+// The public exchange: every number converted once to GMP.
+template <class Num>
+IntervalExchange to_public(const ExchangeOn<Num>& exchange);
+
 // Steps 3-5 on raw pieces that tile [0, N): split out x and the hit states,
 // close the holes, rotate.
 // `size` states, classes modulo `modulus`; the transversals go into the
 // result as they are. `poll` is called once a piece.
 template <class Num>
+ExchangeOn<Num>
+finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal> transversals,
+                   std::vector<RawPieceOn<Num>> pieces, const Num& raw_first,
+                   const std::vector<Num>& raw_hits, const lattice::SetupPoll& poll = {});
+template <class Num>
 IntervalExchange
 finish_exchange(const Num& size, const Num& modulus, std::vector<Transversal> transversals,
                 std::vector<RawPieceOn<Num>> pieces, const Num& raw_first,
-                const std::vector<Num>& raw_hits, const lattice::SetupPoll& poll = {});
+                const std::vector<Num>& raw_hits, const lattice::SetupPoll& poll = {}) {
+    return to_public(finish_exchange_on(size, modulus, std::move(transversals), std::move(pieces),
+                                        raw_first, raw_hits, poll));
+}
 
 // The exchange on integers Num (any of the three, whatever the tables' Int).
 template <class Num, class Int>
-IntervalExchange build_exchange_on(const lattice::LatticeScene& scene,
-                                   const shoot::UniformGrid<Int, 2>& grid,
-                                   const shoot::PieceTable<Int>& table, const Integer (&x_in)[2],
-                                   unsigned x_negative, const lattice::SetupPoll& poll) {
+ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
+                                  const shoot::UniformGrid<Int, 2>& grid,
+                                  const shoot::PieceTable<Int>& table, const Integer (&x_in)[2],
+                                  unsigned x_negative, const lattice::SetupPoll& poll) {
     using lattice::convert;
     Num x[2];
     for (int j = 0; j < 2; ++j) x[j] = convert<Num>(x_in[j]);
@@ -251,32 +283,53 @@ IntervalExchange build_exchange_on(const lattice::LatticeScene& scene,
     }
     const auto first = layout.locate(x, x_negative);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
-    IntervalExchange exchange =
-        finish_exchange(layout.size(), layout.modulus(), layout.public_transversals(),
-                        std::move(raw), layout.raw(*first), hits, poll);
+    ExchangeOn<Num> exchange =
+        finish_exchange_on(layout.size(), layout.modulus(), layout.public_transversals(),
+                           std::move(raw), layout.raw(*first), hits, poll);
     exchange.first_transversal = first->first;
-    exchange.first_index = lattice::to_integer(first->second);
+    exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];
     return exchange;
 }
 
-// On the narrowest integers exchange_arithmetic allows, or the tables'
-// own if wider (SolveOptions::arithmetic forces wider ones, and the tests
-// run every path so). `poll` is called once a piece (it may throw
-// lattice::SetupStopped).
+// On build_arithmetic's integers. `poll` is called once a piece (it may
+// throw lattice::SetupStopped).
 template <class Int>
 IntervalExchange build_exchange(const lattice::LatticeScene& scene,
                                 const shoot::UniformGrid<Int, 2>& grid,
                                 const shoot::PieceTable<Int>& table, const Integer (&x)[2],
                                 unsigned x_negative, const lattice::SetupPoll& poll = {}) {
-    switch (std::max(exchange_arithmetic(scene), lattice::arithmetic_used(Int{}))) {
+    switch (build_arithmetic<Int>(scene)) {
     case ArithmeticUsed::int64:
-        return build_exchange_on<std::int64_t>(scene, grid, table, x, x_negative, poll);
+        return to_public(build_exchange_on<std::int64_t>(scene, grid, table, x, x_negative, poll));
     case ArithmeticUsed::int128:
-        return build_exchange_on<lattice::int128_t>(scene, grid, table, x, x_negative, poll);
+        return to_public(
+            build_exchange_on<lattice::int128_t>(scene, grid, table, x, x_negative, poll));
     default:
-        return build_exchange_on<Integer>(scene, grid, table, x, x_negative, poll);
+        return to_public(build_exchange_on<Integer>(scene, grid, table, x, x_negative, poll));
     }
+}
+
+// The state after the ray's first reflection; nothing when the first shot
+// escapes or is absorbed.
+struct FirstState {
+    Integer x[2];
+    unsigned negative = 0;
+};
+template <class Int>
+std::optional<FirstState> first_state(const lattice::LatticeScene& scene,
+                                      const shoot::UniformGrid<Int, 2>& grid) {
+    Int start[2];
+    for (int j = 0; j < 2; ++j) start[j] = lattice::from_integer<Int>(scene.start[j]);
+    const shoot::Shot<Int> first = grid.shoot(start, scene.start_direction);
+    if (first.escape || first.absorber || first.flip == 0) return std::nullopt;
+    FirstState state;
+    for (int j = 0; j < 2; ++j)
+        state.x[j] = scene.start[j] + (((scene.start_direction >> j) & 1u)
+                                           ? Integer(-lattice::to_integer(first.t))
+                                           : lattice::to_integer(first.t));
+    state.negative = scene.start_direction ^ first.flip;
+    return state;
 }
 
 // The exchange of the ray from the scene's start, x being the state after
@@ -286,16 +339,9 @@ std::optional<IntervalExchange> build_exchange_from_start(const lattice::Lattice
                                                           const shoot::UniformGrid<Int, 2>& grid,
                                                           const shoot::PieceTable<Int>& table,
                                                           const lattice::SetupPoll& poll = {}) {
-    Int start[2];
-    for (int j = 0; j < 2; ++j) start[j] = lattice::from_integer<Int>(scene.start[j]);
-    const shoot::Shot<Int> first = grid.shoot(start, scene.start_direction);
-    if (first.escape || first.absorber || first.flip == 0) return std::nullopt;
-    Integer x[2];
-    for (int j = 0; j < 2; ++j)
-        x[j] = scene.start[j] + (((scene.start_direction >> j) & 1u)
-                                     ? Integer(-lattice::to_integer(first.t))
-                                     : lattice::to_integer(first.t));
-    return build_exchange(scene, grid, table, x, scene.start_direction ^ first.flip, poll);
+    const std::optional<FirstState> first = first_state(scene, grid);
+    if (!first) return std::nullopt;
+    return build_exchange(scene, grid, table, first->x, first->negative, poll);
 }
 
 } // namespace orthoray::induction

@@ -1,5 +1,6 @@
 #include "induction/rauzy_induction.hpp"
 
+#include "induction/exchange_builder.hpp"
 #include "lattice/lattice_int.hpp"
 
 #include <algorithm>
@@ -117,25 +118,27 @@ void then_repeated(Pieces<Int>& x, Link a_link, Link b_link, const Int& times) {
     a.time += times * b.time;
 }
 
-template <class Int>
-std::optional<InducedOrbit> induce_on(const IntervalExchange& exchange, InductionObserver* observer,
+// `pieces`: ExchangePiece or RawPieceOn (start, length, image, kind, hit),
+// sorted by start, x's first.
+template <class Int, class Piece>
+std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, InductionObserver* observer,
                                       const std::function<bool(std::uint64_t)>& stop) {
-    const std::size_t k = exchange.pieces.size();
+    const std::size_t k = pieces.size();
     if (k >= none) throw std::length_error("an exchange of 2^32 pieces or more");
     Pieces<Int> piece;
     piece.length.resize(k);
     piece.ret.resize(k);
     std::vector<Int> image_start(k);
     for (std::size_t i = 0; i < k; ++i) {
-        const ExchangePiece& e = exchange.pieces[i];
-        piece.length[i] = lattice::from_integer<Int>(e.length);
+        const Piece& e = pieces[i];
+        piece.length[i] = lattice::convert<Int>(e.length);
         const ExchangeEvent event = e.hit                           ? ExchangeEvent::hit
                                     : e.kind == PieceKind::escape   ? ExchangeEvent::escape
                                     : e.kind == PieceKind::absorbed ? ExchangeEvent::absorbed
                                                                     : ExchangeEvent::none;
         piece.ret[i].time = 1;
         piece.ret[i].mark = static_cast<int>(event);
-        image_start[i] = lattice::from_integer<Int>(e.image);
+        image_start[i] = lattice::convert<Int>(e.image);
     }
     std::vector<Link> by_start(k), by_image(k);
     std::iota(by_start.begin(), by_start.end(), Link{0});
@@ -233,15 +236,34 @@ std::optional<InducedOrbit> induce_on(const IntervalExchange& exchange, Inductio
     return orbit;
 }
 
+// The narrowest integers N allows (the induction's own bound, above).
+template <class Piece>
+std::optional<InducedOrbit> induce_pieces(const Integer& size, const std::vector<Piece>& pieces,
+                                          InductionObserver* observer,
+                                          const std::function<bool(std::uint64_t)>& stop) {
+    if (size < lattice::int64_limit()) return induce_on<std::int64_t>(pieces, observer, stop);
+    if (size < lattice::int128_limit()) return induce_on<lattice::int128_t>(pieces, observer, stop);
+    return induce_on<Integer>(pieces, observer, stop);
+}
+
 } // namespace
 
 std::optional<InducedOrbit> induce(const IntervalExchange& exchange, InductionObserver* observer,
                                    const std::function<bool(std::uint64_t)>& stop) {
-    if (exchange.size < lattice::int64_limit())
-        return induce_on<std::int64_t>(exchange, observer, stop);
-    if (exchange.size < lattice::int128_limit())
-        return induce_on<lattice::int128_t>(exchange, observer, stop);
-    return induce_on<Integer>(exchange, observer, stop);
+    return induce_pieces(exchange.size, exchange.pieces, observer, stop);
 }
+
+template <class Num>
+std::optional<InducedOrbit> induce(const ExchangeOn<Num>& exchange,
+                                   const std::function<bool(std::uint64_t)>& stop) {
+    return induce_pieces(lattice::to_integer(exchange.size), exchange.pieces, nullptr, stop);
+}
+
+template std::optional<InducedOrbit> induce(const ExchangeOn<std::int64_t>&,
+                                            const std::function<bool(std::uint64_t)>&);
+template std::optional<InducedOrbit> induce(const ExchangeOn<lattice::int128_t>&,
+                                            const std::function<bool(std::uint64_t)>&);
+template std::optional<InducedOrbit> induce(const ExchangeOn<Integer>&,
+                                            const std::function<bool(std::uint64_t)>&);
 
 } // namespace orthoray::induction
