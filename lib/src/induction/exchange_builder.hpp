@@ -38,10 +38,10 @@ namespace orthoray::induction {
 using lattice::floor_mod;
 
 // Every number the build forms is a lattice coordinate, a w, a state
-// number or a sum of two of them, at most 8 max(B, N) in size (B the
-// scene's largest lattice value, N the number of states: docs/induction.md,
-// "The integers of the build"), and N is at most 4 times the number of
-// lattice points on the mirrors. So the build runs on the narrowest of
+// number or a sum of a few of them, at most 8 max(B, N) in size (B the
+// scene's largest lattice value, N the number of states), and N is at most
+// 4 times the number of lattice points on the mirrors (docs/induction.md,
+// "Which integers, and why they are enough"). So the build runs on the narrowest of
 // int64_t, __int128 and GMP integers whose limit (lattice_int.hpp: 2^59,
 // 2^123) exceeds both B and that count.
 ArithmeticUsed exchange_arithmetic(const lattice::LatticeScene& scene);
