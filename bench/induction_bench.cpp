@@ -39,6 +39,9 @@ struct Options {
     int runs = 5;
     Integer sim_cap = 300'000'000; // the simulation runs when reflections <= this
     std::string csv = "bench/results/induction.csv";
+    // Only random mirrors in [0, 10^18]^2, this many (seed 1), when given:
+    // the build-heavy sizes of issue 17 (10^4, 10^5) without the families.
+    std::vector<std::int64_t> mirrors;
 };
 
 Options parse(int argc, char** argv) {
@@ -54,6 +57,9 @@ Options parse(int argc, char** argv) {
             ->check(CLI::Range(1, 1000000));
     CLI::Option* cap =
         app.add_option("--sim-cap", sim_cap, "simulate only when reflections <= N (default 3e8)");
+    app.add_option("--mirrors", o.mirrors,
+                   "only random-N scenes in [0, 10^18]^2, seed 1, for each N given")
+        ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
     app.add_option("--csv", o.csv, "where the rows go (\"\" for none)")->capture_default_str();
     parse_options(app, "induction_bench", argc, argv);
     if (!sim_cap.empty()) {
@@ -110,8 +116,28 @@ Integer power(unsigned base, unsigned exponent) {
     return p;
 }
 
-std::vector<Instance> instances(bool quick) {
+// Random mirrors in the closed box [0, 10^j]^2 (bench/scenes.hpp's
+// random_box: the library's `random` family stops at 2^40), the target on
+// the other lattice parity class than the start, so never reached: the
+// answer is a cycle and the reflections are its period.
+Instance random_instance(std::int64_t mirrors, unsigned j, std::uint64_t seed) {
+    return {"random-" + std::to_string(mirrors),
+            "range=10^" + std::to_string(j) + " seed=" + std::to_string(seed), [mirrors, j, seed] {
+                GeneratedScene g;
+                g.scene = random_box(2, mirrors, seed, power(10, j).get_si());
+                g.notes.push_back("bench random_box: " + std::to_string(mirrors) +
+                                  " mirrors in [0, 10^" + std::to_string(j) + "]^2, seed " +
+                                  std::to_string(seed));
+                return g;
+            }};
+}
+
+std::vector<Instance> instances(bool quick, const std::vector<std::int64_t>& only_mirrors) {
     std::vector<Instance> out;
+    if (!only_mirrors.empty()) {
+        for (std::int64_t mirrors : only_mirrors) out.push_back(random_instance(mirrors, 18, 1));
+        return out;
+    }
     // (2^k + 1) x 2^k from the corner: 2^(k+1) - 1 reflections to the corner.
     const std::vector<unsigned> box_k =
         quick ? std::vector<unsigned>{4, 8, 12, 30}
@@ -142,10 +168,6 @@ std::vector<Instance> instances(bool quick) {
                            return generate_hallway(Rational(length),
                                                    Rational(length - 1, 2 * length));
                        }});
-    // Random mirrors in the closed box [0, 10^j]^2 (bench/scenes.hpp's
-    // random_box: the library's `random` family stops at 2^40), the target on
-    // the other lattice parity class than the start, so never reached: the
-    // answer is a cycle and the reflections are its period.
     const std::vector<unsigned> range_j =
         quick ? std::vector<unsigned>{3, 6} : std::vector<unsigned>{3, 4, 5, 6, 9, 12, 15, 18};
     const std::vector<std::int64_t> mirror_counts =
@@ -154,17 +176,7 @@ std::vector<Instance> instances(bool quick) {
     for (std::int64_t mirrors : mirror_counts)
         for (unsigned j : range_j)
             for (std::uint64_t seed = 1; seed <= seeds; ++seed)
-                out.push_back({"random-" + std::to_string(mirrors),
-                               "range=10^" + std::to_string(j) + " seed=" + std::to_string(seed),
-                               [mirrors, j, seed] {
-                                   GeneratedScene g;
-                                   g.scene = random_box(2, mirrors, seed, power(10, j).get_si());
-                                   g.notes.push_back(
-                                       "bench random_box: " + std::to_string(mirrors) +
-                                       " mirrors in [0, 10^" + std::to_string(j) + "]^2, seed " +
-                                       std::to_string(seed));
-                                   return g;
-                               }});
+                out.push_back(random_instance(mirrors, j, seed));
     return out;
 }
 
@@ -220,7 +232,7 @@ int run(const Options& o) {
                  "simulation / induction"});
     std::fprintf(stderr, "induction_bench: %d run(s), simulation up to %s reflections\n", o.runs,
                  o.sim_cap.get_str().c_str());
-    for (const Instance& instance : instances(o.quick)) {
+    for (const Instance& instance : instances(o.quick, o.mirrors)) {
         const GeneratedScene g = instance.build();
         const Scene& scene = g.scene;
         const std::string elements = std::to_string(scene.elements.size());

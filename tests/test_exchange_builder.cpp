@@ -7,6 +7,10 @@
 
 #include "support/random_lattice.hpp"
 
+#include "orthoray/exchange.hpp"
+#include "orthoray/generate.hpp"
+#include "orthoray/solve.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -115,4 +119,72 @@ TEST_CASE("the exchange is the step map on every state", "[exchange][slow]") {
     CHECK(reflecting > 10000);
     CHECK(dead > 1000);
     CHECK(hits > 100);
+}
+
+namespace {
+
+// The exchange of a 2D scene built on GMP integers throughout (the tables'
+// Integer makes the builder take GMP whatever the bound allows).
+IntervalExchange gmp_exchange(const lattice::LatticeScene& ls) {
+    const shoot::UniformGrid<Integer, 2> grid(ls);
+    auto table = shoot::PieceTable<Integer>::build(ls, grid, 1'000'000);
+    REQUIRE(table);
+    if (ls.target_reachable) {
+        const Integer target[2] = {ls.target[0], ls.target[1]};
+        table->mark_target(grid, target);
+    }
+    return *build_exchange_from_start(ls, grid, *table);
+}
+
+void require_same(const IntervalExchange& a, const IntervalExchange& b) {
+    REQUIRE(a.size == b.size);
+    REQUIRE(a.modulus == b.modulus);
+    REQUIRE(a.first_transversal == b.first_transversal);
+    REQUIRE(a.first_index == b.first_index);
+    REQUIRE(a.transversals.size() == b.transversals.size());
+    for (std::size_t i = 0; i < a.transversals.size(); ++i) {
+        REQUIRE(a.transversals[i].start == b.transversals[i].start);
+        REQUIRE(a.transversals[i].count == b.transversals[i].count);
+        REQUIRE(a.transversals[i].first == b.transversals[i].first);
+    }
+    REQUIRE(a.pieces.size() == b.pieces.size());
+    for (std::size_t i = 0; i < a.pieces.size(); ++i) {
+        REQUIRE(a.pieces[i].start == b.pieces[i].start);
+        REQUIRE(a.pieces[i].length == b.pieces[i].length);
+        REQUIRE(a.pieces[i].image == b.pieces[i].image);
+        REQUIRE(a.pieces[i].kind == b.pieces[i].kind);
+        REQUIRE(a.pieces[i].hit == b.pieces[i].hit);
+    }
+}
+
+} // namespace
+
+// exchange_arithmetic's bound, 4 x (lattice points on the mirrors) < 2^59,
+// at its edge: an m x (m - 1) box from its corner at 45 degrees (lattice
+// scale 1) has 4 (2 (2m - 1) + 4) = 2^59 - 8 such points for m = 2^55 - 1,
+// and 2^59 + 8 for m = 2^55. The first builds on int64_t, the second on
+// __int128 (its largest coordinate is still far below 2^59); both must give
+// GMP's exchange and the closed form.
+TEST_CASE("the exchange is built on the narrowest integers its bound allows", "[exchange]") {
+    for (const auto& [m, expected] : std::vector<std::pair<Integer, ArithmeticUsed>>{
+             {(Integer(1) << 55) - 1, ArithmeticUsed::int64},
+             {Integer(1) << 55, ArithmeticUsed::int128}}) {
+        INFO("m = " << m.get_str());
+        BoxFamily family;
+        family.sides = {m, m - 1};
+        const GeneratedScene g = generate_box(family);
+        const lattice::LatticeScene ls = lattice::make_lattice(g.scene);
+        REQUIRE(ls.magnitude < lattice::int64_limit());
+        REQUIRE(exchange_arithmetic(ls) == expected);
+        const std::optional<IntervalExchange> narrow = exchange_of(g.scene);
+        REQUIRE(narrow);
+        require_same(*narrow, gmp_exchange(ls));
+        SolveOptions o;
+        o.engine = Engine::induction;
+        const Answer a = solve(g.scene, o);
+        REQUIRE(g.expect);
+        REQUIRE(a.engine == EngineUsed::induction);
+        REQUIRE(a.reason == g.expect->reason);
+        REQUIRE(a.reflections == g.expect->reflections);
+    }
 }

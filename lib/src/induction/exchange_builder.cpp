@@ -3,7 +3,23 @@
 #include <numeric>
 
 namespace orthoray::induction {
+
+ArithmeticUsed exchange_arithmetic(const lattice::LatticeScene& scene) {
+    // Lattice points on the mirrors: N is at most four times as many (four
+    // directions; a segment's points are some of its mirrors' points).
+    Integer points = 0;
+    for (const lattice::LatticeElement& e : scene.elements)
+        if (!e.absorber) points += e.hi[1 - e.axis] - e.lo[1 - e.axis] + 1;
+    const Integer bound = std::max(scene.magnitude, Integer(4 * points));
+    if (bound < lattice::int64_limit()) return ArithmeticUsed::int64;
+    if (bound < lattice::int128_limit()) return ArithmeticUsed::int128;
+    return ArithmeticUsed::gmp;
+}
+
 namespace {
+
+using lattice::convert;
+using lattice::gcd_of;
 
 constexpr std::size_t npos = ~std::size_t{0};
 
@@ -15,18 +31,19 @@ int sign_of(unsigned negative, int axis) {
 int w_slope(int axis, unsigned negative) {
     return axis == 0 ? sign_of(negative, 1) : -sign_of(negative, 0);
 }
-Integer w_intercept(int axis, const Integer& offset, unsigned negative) {
-    return axis == 0 ? Integer(-sign_of(negative, 0) * offset)
-                     : Integer(sign_of(negative, 1) * offset);
+template <class Num>
+Num w_intercept(int axis, const Num& offset, unsigned negative) {
+    return axis == 0 ? Num(-sign_of(negative, 0) * offset) : Num(sign_of(negative, 1) * offset);
 }
 
 } // namespace
 
-ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer (&x)[2],
-                               unsigned x_negative, const lattice::SetupPoll& poll) {
+template <class Num>
+ExchangeLayout<Num>::ExchangeLayout(const lattice::LatticeScene& scene, const Num (&x)[2],
+                                    unsigned x_negative, const lattice::SetupPoll& poll) {
     struct Mirror {
         int axis;
-        Integer offset, lo, hi;
+        Num offset, lo, hi;
         std::uint32_t element;
     };
     std::vector<Mirror> mirrors;
@@ -36,9 +53,10 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
         const auto& element = scene.elements[e];
         if (element.absorber) continue;
         const int axis = element.axis;
-        mirrors.push_back({axis, element.lo[axis], element.lo[1 - axis], element.hi[1 - axis], e});
+        mirrors.push_back({axis, convert<Num>(element.lo[axis]), convert<Num>(element.lo[1 - axis]),
+                           convert<Num>(element.hi[1 - axis]), e});
         // A reflection on {axis = c} moves w by +-2c, so w mod gcd(2c) is invariant.
-        modulus_ = gcd(modulus_, Integer(2 * element.lo[axis]));
+        modulus_ = gcd_of(modulus_, Num(2 * mirrors.back().offset));
     }
     w_first_ = sign_of(x_negative, 1) * x[1] - sign_of(x_negative, 0) * x[0];
     std::sort(mirrors.begin(), mirrors.end(), [](const Mirror& a, const Mirror& b) {
@@ -56,14 +74,14 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
                mirrors[end].offset == mirrors[begin].offset)
             ++end;
         const int axis = mirrors[begin].axis;
-        const Integer& offset = mirrors[begin].offset;
-        auto add = [&](const Integer& lo, const Integer& hi) {
+        const Num& offset = mirrors[begin].offset;
+        auto add = [&](const Num& lo, const Num& hi) {
             segments_.push_back({axis, offset, lo, hi});
             group_of_segment.emplace_back(begin, end);
         };
         for (std::size_t i = begin; i < end;) {
             poll();
-            Integer lo = mirrors[i].lo, hi = mirrors[i].hi;
+            Num lo = mirrors[i].lo, hi = mirrors[i].hi;
             std::size_t j = i + 1;
             for (; j < end && mirrors[j].lo <= hi; ++j)
                 if (mirrors[j].hi > hi) hi = mirrors[j].hi;
@@ -73,13 +91,13 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
                 // Vertical mirrors crossing [lo, hi] on the line Y = offset.
                 auto v = std::lower_bound(
                     mirrors.begin(), mirrors.begin() + static_cast<std::ptrdiff_t>(verticals), lo,
-                    [](const Mirror& m, const Integer& value) { return m.offset < value; });
-                Integer from = lo;
+                    [](const Mirror& m, const Num& value) { return m.offset < value; });
+                Num from = lo;
                 for (; v != mirrors.begin() + static_cast<std::ptrdiff_t>(verticals) &&
                        v->offset <= hi;
                      ++v) {
                     if (v->lo > offset || offset > v->hi || v->offset < from) continue;
-                    if (from <= v->offset - 1) add(from, v->offset - 1);
+                    if (from <= v->offset - 1) add(from, Num(v->offset - 1));
                     from = v->offset + 1;
                 }
                 if (from <= hi) add(from, hi);
@@ -94,12 +112,12 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
     for (std::size_t s = 0; s < segments_.size(); ++s) {
         poll();
         const Segment& segment = segments_[s];
-        Integer covered = segment.lo - 1;
+        Num covered = segment.lo - 1;
         for (std::size_t i = group_of_segment[s].first; i < group_of_segment[s].second; ++i) {
             const Mirror& m = mirrors[i];
             if (m.lo > segment.hi) break;
-            Integer from = std::max(m.lo, Integer(covered + 1));
-            Integer to = std::min(m.hi, segment.hi);
+            Num from = std::max(m.lo, Num(covered + 1));
+            Num to = std::min(m.hi, segment.hi);
             if (from > to) continue;
             covered = to;
             owners_[s].push_back({m.element, std::move(from), std::move(to)});
@@ -113,7 +131,7 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
         const Segment& segment = segments_[s];
         for (unsigned d = 0; d < 4; ++d) {
             poll();
-            Transversal t;
+            TransversalOn<Num> t;
             t.axis = segment.axis;
             t.offset = segment.offset;
             t.lo = segment.lo;
@@ -121,13 +139,13 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
             t.negative = d;
             t.w_slope = w_slope(segment.axis, d);
             // w(u) = slope u + intercept = w(x) (mod G) <=> u = slope (w(x) - intercept).
-            const Integer u = t.w_slope * (w_first_ - w_intercept(segment.axis, segment.offset, d));
+            const Num u = t.w_slope * (w_first_ - w_intercept(segment.axis, segment.offset, d));
             if (modulus_ == 0) {
                 if (u < segment.lo || u > segment.hi) continue;
                 t.first = u;
                 t.count = 1;
             } else {
-                t.first = segment.lo + floor_mod(u - segment.lo, modulus_);
+                t.first = segment.lo + floor_mod(Num(u - segment.lo), modulus_);
                 if (t.first > segment.hi) continue;
                 t.count = (segment.hi - t.first) / modulus_ + 1;
             }
@@ -140,11 +158,12 @@ ExchangeLayout::ExchangeLayout(const lattice::LatticeScene& scene, const Integer
     }
 }
 
-std::optional<std::pair<std::size_t, Integer>> ExchangeLayout::locate(const Integer (&p)[2],
-                                                                      unsigned negative) const {
+template <class Num>
+std::optional<std::pair<std::size_t, Num>> ExchangeLayout<Num>::locate(const Num (&p)[2],
+                                                                       unsigned negative) const {
     for (int axis = 0; axis < 2; ++axis) {
-        const Integer& offset = p[axis];
-        const Integer& u = p[1 - axis];
+        const Num& offset = p[axis];
+        const Num& u = p[1 - axis];
         auto after =
             std::upper_bound(segments_.begin(), segments_.end(), 0, [&](int, const Segment& s) {
                 return std::tie(axis, offset, u) < std::tie(s.axis, s.offset, s.lo);
@@ -156,37 +175,40 @@ std::optional<std::pair<std::size_t, Integer>> ExchangeLayout::locate(const Inte
         const std::size_t id =
             transversal_of_[static_cast<std::size_t>(after - 1 - segments_.begin()) * 4 + negative];
         if (id == npos) return std::nullopt;
-        const Transversal& t = transversals_[id];
-        if (modulus_ == 0 ? u != t.first : floor_mod(u - t.first, modulus_) != 0)
+        const TransversalOn<Num>& t = transversals_[id];
+        if (modulus_ == 0 ? u != t.first : floor_mod(Num(u - t.first), modulus_) != 0)
             return std::nullopt;
         return std::make_pair(id, number_of(t, modulus_, u));
     }
     return std::nullopt;
 }
 
-std::optional<std::pair<Integer, Integer>> class_range(const Transversal& t, const Integer& modulus,
-                                                       const Integer& from, const Integer& to) {
-    if (modulus == 0) {
-        if (t.first < from || t.first > to) return std::nullopt;
-        return std::make_pair(t.first, t.first);
+template <class Num>
+std::vector<Transversal> ExchangeLayout<Num>::public_transversals() const {
+    std::vector<Transversal> out;
+    out.reserve(transversals_.size());
+    for (const TransversalOn<Num>& t : transversals_) {
+        Transversal p;
+        p.axis = t.axis;
+        p.negative = t.negative;
+        p.w_slope = t.w_slope;
+        p.offset = lattice::to_integer(t.offset);
+        p.lo = lattice::to_integer(t.lo);
+        p.hi = lattice::to_integer(t.hi);
+        p.first = lattice::to_integer(t.first);
+        p.count = lattice::to_integer(t.count);
+        p.start = lattice::to_integer(t.start);
+        out.push_back(std::move(p));
     }
-    Integer lo = from + floor_mod(t.first - from, modulus);
-    if (lo > to) return std::nullopt;
-    Integer hi = lo + (to - lo) / modulus * modulus;
-    return std::make_pair(std::move(lo), std::move(hi));
-}
-
-Integer number_of(const Transversal& t, const Integer& modulus, const Integer& u) {
-    if (modulus == 0) return 0;
-    Integer j = (u - t.first) / modulus;
-    return t.w_slope > 0 ? j : Integer(t.count - 1 - j);
+    return out;
 }
 
 namespace {
 
 // Splits piece i at `offset` into [start, start + offset) and the rest.
-void split(std::vector<RawPiece>& pieces, std::size_t i, const Integer& offset) {
-    RawPiece rest = pieces[i];
+template <class Num>
+void split(std::vector<RawPieceOn<Num>>& pieces, std::size_t i, const Num& offset) {
+    RawPieceOn<Num> rest = pieces[i];
     rest.start += offset;
     rest.length -= offset;
     if (rest.kind == PieceKind::reflect) rest.image += offset;
@@ -195,30 +217,33 @@ void split(std::vector<RawPiece>& pieces, std::size_t i, const Integer& offset) 
 }
 
 // Makes the state at raw coordinate c a piece of its own; returns its index.
-std::size_t isolate(std::vector<RawPiece>& pieces, const Integer& c) {
-    auto after = std::upper_bound(pieces.begin(), pieces.end(), c,
-                                  [](const Integer& v, const RawPiece& p) { return v < p.start; });
+template <class Num>
+std::size_t isolate(std::vector<RawPieceOn<Num>>& pieces, const Num& c) {
+    auto after =
+        std::upper_bound(pieces.begin(), pieces.end(), c,
+                         [](const Num& v, const RawPieceOn<Num>& p) { return v < p.start; });
     std::size_t i = static_cast<std::size_t>(after - pieces.begin()) - 1;
     if (pieces[i].start < c) {
-        split(pieces, i, c - pieces[i].start);
+        split(pieces, i, Num(c - pieces[i].start));
         ++i;
     }
-    if (pieces[i].length > 1) split(pieces, i, 1);
+    if (pieces[i].length > 1) split(pieces, i, Num(1));
     return i;
 }
 
 } // namespace
 
-IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
-                                 std::vector<Transversal> transversals,
-                                 std::vector<RawPiece> pieces, const Integer& raw_first,
-                                 const std::vector<Integer>& raw_hits,
-                                 const lattice::SetupPoll& poll) {
-    const Integer& n = size;
+template <class Num>
+ExchangeOn<Num>
+finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal> transversals,
+                   std::vector<RawPieceOn<Num>> pieces, const Num& raw_first,
+                   const std::vector<Num>& raw_hits, const lattice::SetupPoll& poll) {
+    using Piece = RawPieceOn<Num>;
+    const Num& n = size;
     std::sort(pieces.begin(), pieces.end(),
-              [](const RawPiece& a, const RawPiece& b) { return a.start < b.start; });
-    Integer at = 0;
-    for (const RawPiece& p : pieces) {
+              [](const Piece& a, const Piece& b) { return a.start < b.start; });
+    Num at = 0;
+    for (const Piece& p : pieces) {
         poll();
         if (p.start != at) throw std::logic_error("the tables' pieces do not tile the states");
         at += p.length;
@@ -226,40 +251,40 @@ IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
     if (at != n) throw std::logic_error("the tables' pieces do not tile the states");
 
     isolate(pieces, raw_first);
-    for (const Integer& h : raw_hits) pieces[isolate(pieces, h)].hit = true;
+    for (const Num& h : raw_hits) pieces[isolate(pieces, h)].hit = true;
 
     // Close the holes: escaping and absorbed pieces, in domain order, onto
     // the states no piece maps to, in order.
-    std::vector<std::pair<Integer, Integer>> images; // (start, length) of the reflecting ones
-    for (const RawPiece& p : pieces) {
+    std::vector<std::pair<Num, Num>> images; // (start, length) of the reflecting ones
+    for (const Piece& p : pieces) {
         poll(); // copies: on 10^5-digit numbers, much fresh memory
         if (p.kind == PieceKind::reflect) images.emplace_back(p.image, p.length);
     }
     std::sort(images.begin(), images.end());
-    std::vector<std::pair<Integer, Integer>> holes;
+    std::vector<std::pair<Num, Num>> holes;
     at = 0;
     for (const auto& [start, length] : images) {
         poll();
         if (start < at) throw std::logic_error("two states of the tables have one image");
-        if (start > at) holes.emplace_back(at, start - at);
+        if (start > at) holes.emplace_back(at, Num(start - at));
         at = start + length;
     }
-    if (at < n) holes.emplace_back(at, n - at);
-    std::vector<RawPiece> closed;
+    if (at < n) holes.emplace_back(at, Num(n - at));
+    std::vector<Piece> closed;
     closed.reserve(pieces.size() + holes.size());
     std::size_t hole = 0;
-    Integer used = 0; // of the current hole
-    for (RawPiece& p : pieces) {
+    Num used = 0; // of the current hole
+    for (Piece& p : pieces) {
         poll();
         if (p.kind == PieceKind::reflect) {
             closed.push_back(std::move(p));
             continue;
         }
-        Integer start = p.start, left = p.length;
+        Num start = p.start, left = p.length;
         while (left > 0) {
             if (hole == holes.size()) throw std::logic_error("more dead states than holes");
-            const Integer room = holes[hole].second - used;
-            RawPiece part = p;
+            const Num room = holes[hole].second - used;
+            Piece part = p;
             part.start = start;
             part.length = std::min(left, room);
             part.image = holes[hole].first + used;
@@ -277,23 +302,20 @@ IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
     // Rotate so that x is 0: the pieces in domain order from x's on, then
     // those before it (no sort needed); an image that wraps around is cut
     // in two.
-    IntervalExchange exchange;
+    ExchangeOn<Num> exchange;
     exchange.pieces.reserve(closed.size() + 1);
     const auto first = std::find_if(closed.begin(), closed.end(),
-                                    [&](const RawPiece& p) { return p.start == raw_first; });
+                                    [&](const Piece& p) { return p.start == raw_first; });
     std::rotate(closed.begin(), first, closed.end());
-    for (RawPiece& p : closed) {
+    for (Piece& p : closed) {
         poll();
-        ExchangePiece q;
-        q.start = floor_mod(p.start - raw_first, n);
-        q.image = floor_mod(p.image - raw_first, n);
-        q.length = std::move(p.length);
-        q.kind = p.kind;
-        q.hit = p.hit;
-        std::optional<ExchangePiece> rest;
+        Piece q = std::move(p);
+        q.start = floor_mod(Num(q.start - raw_first), n);
+        q.image = floor_mod(Num(q.image - raw_first), n);
+        std::optional<Piece> rest;
         if (q.image + q.length > n) {
             rest = q;
-            const Integer head = n - q.image;
+            const Num head = n - q.image;
             rest->start += head;
             rest->length -= head;
             rest->image = 0;
@@ -309,5 +331,48 @@ IntervalExchange finish_exchange(const Integer& size, const Integer& modulus,
     exchange.transversals = std::move(transversals);
     return exchange;
 }
+
+template <class Num>
+IntervalExchange to_public(const ExchangeOn<Num>& exchange) {
+    using lattice::to_integer;
+    IntervalExchange out;
+    for (int j = 0; j < 2; ++j) out.scale[j] = exchange.scale[j];
+    out.modulus = to_integer(exchange.modulus);
+    out.transversals = exchange.transversals;
+    out.first_transversal = exchange.first_transversal;
+    out.first_index = to_integer(exchange.first_index);
+    out.size = to_integer(exchange.size);
+    out.pieces.reserve(exchange.pieces.size());
+    for (const RawPieceOn<Num>& p : exchange.pieces) {
+        ExchangePiece q;
+        q.start = to_integer(p.start);
+        q.length = to_integer(p.length);
+        q.image = to_integer(p.image);
+        q.kind = p.kind;
+        q.hit = p.hit;
+        out.pieces.push_back(std::move(q));
+    }
+    return out;
+}
+
+template class ExchangeLayout<std::int64_t>;
+template class ExchangeLayout<lattice::int128_t>;
+template class ExchangeLayout<Integer>;
+template ExchangeOn<std::int64_t>
+finish_exchange_on(const std::int64_t&, const std::int64_t&, std::vector<Transversal>,
+                   std::vector<RawPieceOn<std::int64_t>>, const std::int64_t&,
+                   const std::vector<std::int64_t>&, const lattice::SetupPoll&);
+template IntervalExchange to_public(const ExchangeOn<std::int64_t>&);
+template ExchangeOn<lattice::int128_t>
+finish_exchange_on(const lattice::int128_t&, const lattice::int128_t&, std::vector<Transversal>,
+                   std::vector<RawPieceOn<lattice::int128_t>>, const lattice::int128_t&,
+                   const std::vector<lattice::int128_t>&, const lattice::SetupPoll&);
+template IntervalExchange to_public(const ExchangeOn<lattice::int128_t>&);
+template ExchangeOn<Integer> finish_exchange_on(const Integer&, const Integer&,
+                                                std::vector<Transversal>,
+                                                std::vector<RawPieceOn<Integer>>, const Integer&,
+                                                const std::vector<Integer>&,
+                                                const lattice::SetupPoll&);
+template IntervalExchange to_public(const ExchangeOn<Integer>&);
 
 } // namespace orthoray::induction

@@ -26,16 +26,22 @@ void set_outcome(Answer& answer, const InducedOrbit& orbit) {
     answer.reflections = orbit.offset + 1;
 }
 
-template <class Int>
-Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
-                const shoot::PieceTable<Int>& table, const SolveOptions& options,
-                std::uint64_t reflections, const lattice::SetupPoll& poll) {
+namespace {
+
+// On the build's integers Num throughout; the public exchange (GMP) only
+// for an observer.
+template <class Num, class Int>
+Decision decide_on(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
+                   const shoot::PieceTable<Int>& table, const SolveOptions& options,
+                   std::uint64_t reflections, const lattice::SetupPoll& poll) {
     using Clock = std::chrono::steady_clock;
     const auto begin = Clock::now();
     Decision decision;
     // The run has taken reflection 1, so the first shot neither escapes nor
     // is absorbed: the exchange is there.
-    const IntervalExchange exchange = *build_exchange_from_start(scene, grid, table, poll);
+    const FirstState first = *first_state(scene, grid);
+    const ExchangeOn<Num> exchange =
+        build_exchange_on<Num>(scene, grid, table, first.x, first.negative, poll);
 
     auto stop = [&](std::uint64_t) {
         if (!options.monitor) return false;
@@ -43,7 +49,7 @@ Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int
         return decision.limit.has_value();
     };
     if (stop(0)) return decision; // building it takes a while on huge numbers
-    const std::optional<InducedOrbit> orbit = induce(exchange, nullptr, stop);
+    const std::optional<InducedOrbit> orbit = induce(exchange, stop);
     if (!orbit) return decision;
 
     Answer answer;
@@ -58,18 +64,35 @@ Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int
         if (needed > Integer(static_cast<unsigned long>(*options.max_steps))) return decision;
     }
     answer.stats.induction.pieces = exchange.pieces.size();
-    answer.stats.induction.states = exchange.size;
+    answer.stats.induction.states = lattice::to_integer(exchange.size);
     answer.stats.induction.steps = orbit->steps;
     answer.stats.induction.rounds = orbit->rounds;
     if (InductionObserver* observer = options.induction_observer) {
         // Run again, streaming the steps: an observer (a certificate) only
         // gets them once the answer is known to stand (within max_steps).
-        observer->begin(exchange);
-        if (!induce(exchange, observer, stop)) return decision;
+        const IntervalExchange shown = to_public(exchange);
+        observer->begin(shown);
+        if (!induce(shown, observer, stop)) return decision;
     }
     answer.stats.induction.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
     decision.answer = std::move(answer);
     return decision;
+}
+
+} // namespace
+
+template <class Int>
+Decision decide(const lattice::LatticeScene& scene, const shoot::UniformGrid<Int, 2>& grid,
+                const shoot::PieceTable<Int>& table, const SolveOptions& options,
+                std::uint64_t reflections, const lattice::SetupPoll& poll) {
+    switch (build_arithmetic<Int>(scene)) {
+    case ArithmeticUsed::int64:
+        return decide_on<std::int64_t>(scene, grid, table, options, reflections, poll);
+    case ArithmeticUsed::int128:
+        return decide_on<lattice::int128_t>(scene, grid, table, options, reflections, poll);
+    default:
+        return decide_on<Integer>(scene, grid, table, options, reflections, poll);
+    }
 }
 
 template Decision decide<std::int64_t>(const lattice::LatticeScene&,

@@ -36,5 +36,11 @@ namespace orthoray::induction {
 // Every step goes to `observer`, if any (begin() is the caller's).
 std::optional<InducedOrbit> induce(const IntervalExchange& exchange, InductionObserver* observer,
                                    const std::function<bool(std::uint64_t)>& stop);
+// The same on the build's own integers (exchange_builder.hpp), unconverted.
+template <class Num>
+struct ExchangeOn;
+template <class Num>
+std::optional<InducedOrbit> induce(const ExchangeOn<Num>& exchange,
+                                   const std::function<bool(std::uint64_t)>& stop);
 
 } // namespace orthoray::induction

@@ -12,6 +12,7 @@
 #include "orthoray/number.hpp"
 
 #include <cstdint>
+#include <type_traits>
 
 namespace orthoray::lattice {
 
@@ -35,12 +36,12 @@ inline std::int64_t from_integer<std::int64_t>(const Integer& x) {
 }
 template <>
 inline int128_t from_integer<int128_t>(const Integer& x) {
-    // |x| < 2^123: two 64-bit limbs of the magnitude, then the sign.
-    Integer magnitude = abs(x);
-    Integer high = magnitude >> 64;
-    Integer low = magnitude - (high << 64);
-    int128_t r = (static_cast<int128_t>(high.get_ui()) << 64) | low.get_ui();
-    return x < 0 ? -r : r;
+    // |x| < 2^123: the two low limbs of the magnitude, then the sign (read in
+    // place: building the exchange converts every piece once).
+    static_assert(GMP_NUMB_BITS == 64, "64-bit GMP limbs");
+    const mpz_srcptr z = x.get_mpz_t();
+    const uint128_t m = (static_cast<uint128_t>(mpz_getlimbn(z, 1)) << 64) | mpz_getlimbn(z, 0);
+    return mpz_sgn(z) < 0 ? -static_cast<int128_t>(m) : static_cast<int128_t>(m);
 }
 template <>
 inline Integer from_integer<Integer>(const Integer& x) {
@@ -53,10 +54,12 @@ inline Integer to_integer(std::int64_t x) {
 inline Integer to_integer(int128_t x) {
     const bool negative = x < 0;
     const uint128_t m = negative ? -static_cast<uint128_t>(x) : static_cast<uint128_t>(x);
-    Integer r = Integer(static_cast<unsigned long>(m >> 64));
-    r <<= 64;
-    r += Integer(static_cast<unsigned long>(m & ~std::uint64_t{0}));
-    return negative ? Integer(-r) : r;
+    Integer r;
+    mp_limb_t* limbs = mpz_limbs_write(r.get_mpz_t(), 2);
+    limbs[0] = static_cast<mp_limb_t>(m);
+    limbs[1] = static_cast<mp_limb_t>(m >> 64);
+    mpz_limbs_finish(r.get_mpz_t(), negative ? -2 : 2); // normalizes the size
+    return r;
 }
 inline const Integer& to_integer(const Integer& x) {
     return x;
@@ -78,6 +81,43 @@ inline Integer floor_mod(const Integer& a, const Integer& b) {
     Integer r;
     mpz_fdiv_r(r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
     return r;
+}
+
+// a - b * floor(a / b), in [0, b) for b > 0, on machine integers.
+template <class Int>
+Int floor_mod(Int a, Int b) {
+    const Int r = a % b;
+    return r < 0 ? Int(r + b) : r;
+}
+
+// gcd(a, b) >= 0 (gcd(0, 0) = 0), on machine integers: Euclid.
+template <class Int>
+Int gcd_of(Int a, Int b) {
+    if (a < 0) a = -a;
+    if (b < 0) b = -b;
+    while (b != 0) {
+        const Int r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
+}
+inline Integer gcd_of(const Integer& a, const Integer& b) {
+    return gcd(a, b);
+}
+
+// A value of one lattice integer type as another that holds it (the
+// caller's bound says it does).
+template <class To, class From>
+To convert(const From& x) {
+    if constexpr (std::is_same_v<To, From>)
+        return x;
+    else if constexpr (std::is_same_v<From, Integer>)
+        return from_integer<To>(x);
+    else if constexpr (std::is_same_v<To, Integer>)
+        return to_integer(x);
+    else
+        return static_cast<To>(x);
 }
 
 // Cell indices are small (the grid has O(n) cells), whatever Int is.
