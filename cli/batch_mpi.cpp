@@ -97,7 +97,11 @@ void work(const BatchArgs& args) {
             instances.emplace_back(work.substr(at, path_end - at), std::move(hashes));
             at = hashes_end + 1;
         }
-        for (const auto& [path, hashes] : instances) {
+        // Named members, not structured bindings: clang 14 (clang-tidy's
+        // front end, .ci/tidy) refuses to capture those in a lambda.
+        for (const auto& instance : instances) {
+            const std::string& path = instance.first;
+            const std::set<std::string>& hashes = instance.second;
             const DoneCheck done = [&](const std::string& key) {
                 for (const std::string& hash : hashes)
                     if (key == result_key(path, hash)) return true;
