@@ -61,11 +61,21 @@ private:
 // thread may change the caller's Scene.
 SolvedScene solve_scene(Scene scene, const std::string& engine,
                         std::optional<std::uint64_t> max_steps, std::optional<double> timeout,
-                        std::optional<std::string> certificate, const std::string& format) {
+                        std::optional<std::string> certificate, const std::string& format,
+                        const py::object& min_intensity) {
     require_ray_and_target(scene);
     SolveOptions options;
     options.engine = engine_from(engine);
     options.max_steps = max_steps;
+    if (!min_intensity.is_none()) {
+        const Rational eps = rational_from(min_intensity, "min_intensity");
+        if (eps.get_den() != 1 || eps < 0)
+            throw py::value_error("min_intensity: expected a natural number (0, 1, 2, ...)");
+        if (options.engine == Engine::graph || options.engine == Engine::induction)
+            throw py::value_error("min_intensity: the intensity question has its own branch "
+                                  "search; use engine auto, lattice or reference");
+        options.min_intensity = eps.get_num();
+    }
     PythonMonitor monitor(timeout);
     options.monitor = &monitor;
     std::optional<CertificateFile> file;
@@ -137,12 +147,16 @@ shows its picture in a notebook.)")
     m.def("solve", &solve_scene, py::arg("scene"), py::kw_only(), py::arg("engine") = "auto",
           py::arg("max_steps") = py::none(), py::arg("timeout") = py::none(),
           py::arg("certificate") = py::none(), py::arg("certificate_format") = "text",
+          py::arg("min_intensity") = py::none(),
           R"(Decide the scene exactly, as `orthoray solve` does.
 
 engine: auto, lattice, induction, reference or graph. max_steps and timeout
 (seconds) end the run as a limit (answer 'unknown', reason 'limit'), with
 what was proven so far. certificate: a path to write the certificate to
-(certificate_format 'text' or 'jsonl'); verify() checks it.)");
+(certificate_format 'text' or 'jsonl'); verify() checks it. min_intensity:
+an int EPS asks the intensity question instead (docs/intensity.md: is each
+target reached with intensity above EPS? every ray needs an intensity);
+each lit target then carries its 'intensity'.)");
 
     m.def(
         "verify",

@@ -105,6 +105,29 @@ def test_certificates_verify_and_tampered_ones_fail(tmp_path):
     assert not valid and message
 
 
+def test_the_intensity_question_with_a_certificate(tmp_path):
+    scene = orthoray.Scene.parse(
+        "dim 2\n"
+        "splitter x 2 y -1 1 reflectance 1/2 transmittance 1/3\n"
+        "ray 0 0 1 0 intensity 1000\n"
+        "target 3 0\n"
+        "target -1 0\n"
+    )
+    cert = tmp_path / "intensity.cert"
+    answer = orthoray.solve(scene, min_intensity=400, certificate=str(cert))
+    assert answer.answer == "no"
+    assert [t["answer"] for t in answer.targets] == ["no", "yes"]
+    assert answer.targets[1]["intensity"] == 500
+    assert orthoray.verify(scene, str(cert)) == (
+        True,
+        "valid: unlit above intensity 400, 1 reflections, 2 states",
+    )
+    with pytest.raises(ValueError):
+        orthoray.solve(scene, min_intensity=Fraction(1, 2))
+    with pytest.raises(TypeError):
+        orthoray.solve(scene, min_intensity=0.5)
+
+
 def test_limits_are_answers_not_errors():
     scene = orthoray.generate_box([10**30 + 7, 10**30 + 9])
     answer = orthoray.solve(scene, engine="lattice", max_steps=1000)
