@@ -432,11 +432,32 @@ std::optional<OctagonalLayout> Builder<Int>::build_all(const Point<Int>& x, int 
     const auto first = locate(x, x_sheet);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
     layout.first = raw(first->first, first->second);
+    layout.first_slot = first->first;
+    layout.first_index = raw(first->first, first->second) - slots_[first->first].start;
     // The twin: x's other lift, when two sheets share its direction.
     for (int g = 0; g < 8; ++g)
         if (g != x_sheet && s_.direction[static_cast<std::size_t>(g)] ==
                                 s_.direction[static_cast<std::size_t>(x_sheet)])
-            if (const auto twin = locate(x, g)) layout.twin = raw(twin->first, twin->second);
+            if (const auto twin = locate(x, g)) {
+                layout.twin = raw(twin->first, twin->second);
+                layout.twin_slot = twin->first;
+                layout.twin_index = *layout.twin - slots_[twin->first].start;
+            }
+    // Each slot's states as lattice points: point_of is affine in w, and
+    // the states of a slot are w = first + i * G.
+    layout.transversals.reserve(slots_.size());
+    for (const Slot& t : slots_) {
+        const Point<Int> q0 = point_of(t, t.first);
+        const Point<Int>& d = s_.direction[static_cast<std::size_t>(t.sheet)];
+        LiftedTransversal lifted{to_integer(q0[0]), to_integer(q0[1]), 0, 0, t.count,
+                                 to_integer(d[0]),  to_integer(d[1])};
+        if (t.count > 1) {
+            const Point<Int> q1 = point_of(t, t.first + modulus_);
+            lifted.step_x = to_integer(q1[0]) - lifted.x0;
+            lifted.step_y = to_integer(q1[1]) - lifted.y0;
+        }
+        layout.transversals.push_back(std::move(lifted));
+    }
     // The states whose segment passes the target: those at it, and for each
     // sheet the one a shot back from the target finds.
     for (int g = 0; g < 8; ++g) {

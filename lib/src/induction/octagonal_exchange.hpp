@@ -46,6 +46,11 @@ struct OctagonalLayout {
     // On a double cover, x's other lift: T^p(x) = twin means the physical
     // orbit returned after p reflections.
     std::optional<Integer> twin;
+    // The same states as lattice points, for certificates: one transversal
+    // a slot in raw order, and where x (and its twin) sit in them.
+    std::vector<LiftedTransversal> transversals;
+    std::size_t first_slot = 0, twin_slot = 0;
+    Integer first_index, twin_index;
 };
 
 enum class BuildFailure {
