@@ -7,6 +7,8 @@
 #include "support/certificate_outcome.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_octagonal.hpp"
+#include "support/run_cli.hpp"
+#include "support/test_files.hpp"
 
 #include "orthoray/certificate.hpp"
 #include "orthoray/exchange.hpp"
@@ -262,4 +264,37 @@ TEST_CASE("huge octagonal closed forms are certified and verified",
                     CHECK(t.message.find("the induction gives") != std::string::npos);
                 }
             }
+}
+
+TEST_CASE("solve --engine induction --certificate, verify and render on a huge diamond",
+          "[octagonal][induction-certificate][cli]") {
+    // Once refused (exit 2); now the certificate is written, verifies, and
+    // render draws the path by simulating it, as for axis-parallel scenes.
+    test::TempDir dir;
+    const std::string scene =
+        dir.write("diamond.scene", "dim 2\n"
+                                   "mirror / 0 -1000000000000000000 1000000000000000000 0\n"
+                                   "mirror \\ -1000000000000000000 0 0 -1000000000000000000\n"
+                                   "mirror \\ 0 1000000000000000000 1000000000000000000 0\n"
+                                   "mirror / -1000000000000000000 0 0 1000000000000000000\n"
+                                   "ray 1/2 1/2 1 1000000000000000001\n"
+                                   "target 2000000000000000000 2000000000000000000\n");
+    for (const char* engine : {"induction", "auto"}) {
+        const std::string cert = dir.path(std::string(engine) + ".cert");
+        const test::CliResult solved =
+            test::run_cli("solve " + test::quote(scene) + " --engine " + engine +
+                          " --certificate " + test::quote(cert));
+        INFO(solved.out << solved.err);
+        CHECK(solved.status == 1); // the answer no
+        CHECK(test::slurp(cert).find("method octagonal-induction") != std::string::npos);
+        const test::CliResult verified =
+            test::run_cli("verify " + test::quote(scene) + " " + test::quote(cert));
+        CHECK(verified.status == 0);
+        CHECK(verified.out == "valid: cycle, 2000000000000000002 reflections\n");
+        const std::string svg = dir.path(std::string(engine) + ".svg");
+        CHECK(test::run_cli("render " + test::quote(scene) + " --certificate " + test::quote(cert) +
+                            " -o " + test::quote(svg))
+                  .status == 0);
+        CHECK(test::slurp(svg).find("<svg") != std::string::npos);
+    }
 }
