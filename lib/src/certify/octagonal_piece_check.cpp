@@ -15,6 +15,7 @@
 #include "certify/induction_piece_geometry.hpp"
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -32,9 +33,90 @@ struct LineRun {
 // Where the ray from the run's states meets an element: the states j in
 // `states`, at time t(j) = a(j) / b.
 struct Crossing {
+    std::size_t element = 0;
     Range states;
     Affine a;
     Integer b;
+};
+
+// The elements by their range of cross(d, X) over their points X, for one
+// direction d: the ray from Q moves on the line cross(d, X) = cross(d, Q),
+// so only elements whose range holds that value can meet it. Sorted by the
+// range's low end, with a tree of the largest high end over each block, a
+// query lists the elements whose range meets [lo, hi] in
+// O((1 + answers) log n), where trying every element cost O(n) a run.
+class CrossIndex {
+public:
+    CrossIndex(const std::vector<OctagonalElement>& elements, const Integer& dx,
+               const Integer& dy) {
+        for (std::size_t e = 0; e < elements.size(); ++e) {
+            const OctagonalElement& el = elements[e];
+            // The element's ends from n . X = c and m . X in {lo, hi}: cross(d, X)
+            // is affine along the element, so its range is between the ends'.
+            Integer ends[2];
+            for (int k = 0; k < 2; ++k) {
+                const Integer& along = k == 0 ? el.lo : el.hi;
+                // X = (c n + along m) / (n . n) (n and m orthogonal, |n| = |m|).
+                const Integer x = el.c * el.nx + along * el.mx;
+                const Integer y = el.c * el.ny + along * el.my;
+                ends[k] = dx * y - dy * x; // times n . n > 0: order kept
+            }
+            const Integer norm = el.nx * el.nx + el.ny * el.ny;
+            if (ends[1] < ends[0]) std::swap(ends[0], ends[1]);
+            spans_.push_back({std::move(ends[0]), std::move(ends[1]), norm, e});
+        }
+        std::sort(spans_.begin(), spans_.end(),
+                  [](const Span& a, const Span& b) { return a.lo * b.norm < b.lo * a.norm; });
+        size_ = 1;
+        while (size_ < spans_.size()) size_ *= 2;
+        top_.assign(2 * size_, std::nullopt);
+        for (std::size_t i = 0; i < spans_.size(); ++i)
+            top_[size_ + i] = exact(spans_[i].hi, spans_[i].norm);
+        for (std::size_t i = size_ - 1; i >= 1; --i) top_[i] = larger(top_[2 * i], top_[2 * i + 1]);
+    }
+
+    // The elements whose range meets [lo, hi] (in plain cross units).
+    void query(const Integer& lo, const Integer& hi, std::vector<std::size_t>& out) const {
+        out.clear();
+        if (spans_.empty()) return;
+        // The spans with low end <= hi form a prefix.
+        const auto end =
+            std::upper_bound(spans_.begin(), spans_.end(), hi,
+                             [](const Integer& v, const Span& s) { return v * s.norm < s.lo; });
+        collect(1, 0, size_, static_cast<std::size_t>(end - spans_.begin()), exact(lo, 1), out);
+    }
+
+private:
+    struct Span {
+        Integer lo, hi, norm; // the range is [lo / norm, hi / norm]
+        std::size_t element;
+    };
+    static Rational exact(const Integer& num, const Integer& den) {
+        Rational q(num, den);
+        q.canonicalize();
+        return q;
+    }
+    static std::optional<Rational> larger(const std::optional<Rational>& a,
+                                          const std::optional<Rational>& b) {
+        if (!a) return b;
+        if (!b) return a;
+        return *a < *b ? b : a;
+    }
+    void collect(std::size_t node, std::size_t from, std::size_t to, std::size_t limit,
+                 const Rational& lo, std::vector<std::size_t>& out) const {
+        if (from >= limit || !top_[node] || *top_[node] < lo) return;
+        if (to - from == 1) {
+            out.push_back(spans_[from].element);
+            return;
+        }
+        const std::size_t mid = (from + to) / 2;
+        collect(2 * node, from, mid, limit, lo, out);
+        collect(2 * node + 1, mid, to, limit, lo, out);
+    }
+
+    std::vector<Span> spans_;
+    std::size_t size_ = 1;
+    std::vector<std::optional<Rational>> top_;
 };
 
 Affine combine(const Integer& u, const Affine& f, const Integer& v, const Affine& g) {
@@ -125,8 +207,13 @@ private:
         std::optional<std::string> hit_state, miss_state;
         for (const LineRun& run : domain) {
             crossings_.clear();
-            for (const OctagonalElement& e : exchange_.elements)
-                crossings_.push_back(cross_element(e, run));
+            const Integer c0 = run.dx * run.qy.a - run.dy * run.qx.a;
+            const Integer c1 = c0 + (run.n - 1) * (run.dx * run.qy.b - run.dy * run.qx.b);
+            index_for(run.dx, run.dy).query(std::min(c0, c1), std::max(c0, c1), candidates_);
+            for (std::size_t e : candidates_) {
+                crossings_.push_back(cross_element(exchange_.elements[e], run));
+                crossings_.back().element = e;
+            }
             switch (piece.kind) {
             case Kind::reflect:
                 if (domain.size() != 1)
@@ -137,10 +224,10 @@ private:
                 check_reflect(where, piece, run);
                 break;
             case Kind::escape:
-                for (std::size_t e = 0; e < crossings_.size(); ++e)
-                    if (!crossings_[e].states.empty())
-                        fail(where, state_text(run, crossings_[e].states.lo) + " meets " +
-                                        element_text(exchange_.elements[e]) +
+                for (const Crossing& m : crossings_)
+                    if (!m.states.empty())
+                        fail(where, state_text(run, m.states.lo) + " meets " +
+                                        element_text(exchange_.elements[m.element]) +
                                         ", yet the piece is escape");
                 break;
             case Kind::absorbed:
@@ -239,14 +326,13 @@ private:
         const Integer e2 = run.dx * run.dx + run.dy * run.dy;
         // The elements met exactly at the claimed point, by orientation.
         std::vector<std::pair<Range, int>> at_point;
-        for (std::size_t e = 0; e < crossings_.size(); ++e) {
-            const Crossing& m = crossings_[e];
+        for (const Crossing& m : crossings_) {
             if (m.states.empty()) continue;
             // diff > 0: the element comes before the claimed point.
             const Affine diff = combine(m.b, ahead, -e2, m.a);
             const Integer at_lo = diff.at(m.states.lo);
             const Integer at_hi = diff.at(m.states.hi);
-            const OctagonalElement& oe = exchange_.elements[e];
+            const OctagonalElement& oe = exchange_.elements[m.element];
             if (sgn(at_lo) > 0 || sgn(at_hi) > 0) {
                 const Integer& j = sgn(at_lo) > 0 ? m.states.lo : m.states.hi;
                 fail(where, state_text(run, j) + " meets " + element_text(oe) +
@@ -312,7 +398,7 @@ private:
             std::optional<std::size_t> absorber;
             for (std::size_t e = 0; e < crossings_.size() && !absorber; ++e) {
                 const Crossing& m = crossings_[e];
-                if (!exchange_.elements[e].absorber || !m.states.contains(cur)) continue;
+                if (!exchange_.elements[m.element].absorber || !m.states.contains(cur)) continue;
                 Rational t(m.a.at(cur), m.b);
                 t.canonicalize();
                 if (t == *first) absorber = e;
@@ -322,9 +408,8 @@ private:
                                 " first meets a mirror and no absorber, yet the piece is absorbed");
             const Crossing& a = crossings_[*absorber];
             Integer end = a.states.hi;
-            for (std::size_t e = 0; e < crossings_.size(); ++e) {
-                if (exchange_.elements[e].absorber) continue;
-                const Crossing& m = crossings_[e];
+            for (const Crossing& m : crossings_) {
+                if (exchange_.elements[m.element].absorber) continue;
                 Range r = m.states;
                 r.lo = std::max(r.lo, cur);
                 r.hi = std::min(r.hi, end);
@@ -338,7 +423,17 @@ private:
 
     const OctagonalExchange& exchange_;
     const std::vector<PieceSpec>& pieces_;
-    std::vector<Crossing> crossings_; // of the current run, one an element
+    const CrossIndex& index_for(const Integer& dx, const Integer& dy) {
+        auto it = indexes_.find({dx, dy});
+        if (it == indexes_.end())
+            it = indexes_.emplace(std::make_pair(dx, dy), CrossIndex(exchange_.elements, dx, dy))
+                     .first;
+        return it->second;
+    }
+
+    std::map<std::pair<Integer, Integer>, CrossIndex> indexes_; // one a direction
+    std::vector<std::size_t> candidates_;
+    std::vector<Crossing> crossings_; // of the current run, one a candidate element
 };
 
 } // namespace
