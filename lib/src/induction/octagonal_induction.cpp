@@ -97,6 +97,20 @@ IntervalExchange with_twin_alone(IntervalExchange exchange, const Integer& twin)
     return exchange;
 }
 
+// What a certificate (and exchange_of) tells about the states: the lattice
+// scale and the lifted transversals as lattice points, x and its twin.
+void add_lattice_states(IntervalExchange& exchange, const OctagonalLayout& layout,
+                        const Integer& scale) {
+    exchange.scale[0] = exchange.scale[1] = scale;
+    exchange.lifted = layout.transversals;
+    exchange.first_transversal = layout.first_slot;
+    exchange.first_index = layout.first_index;
+    if (layout.twin) {
+        exchange.twin_transversal = layout.twin_slot;
+        exchange.twin_index = layout.twin_index;
+    }
+}
+
 // The most pieces the exchange may have (as for the axis-parallel engine).
 std::size_t cap_of(const Scene& scene) {
     return piece_cap(scene.elements.size());
@@ -202,14 +216,7 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
         // answer is known to stand.
         visit_prefix();
         if (InductionObserver* observer = options.induction_observer) {
-            exchange.scale[0] = exchange.scale[1] = s.scale;
-            exchange.lifted = std::move(layout->transversals);
-            exchange.first_transversal = layout->first_slot;
-            exchange.first_index = layout->first_index;
-            if (layout->twin) {
-                exchange.twin_transversal = layout->twin_slot;
-                exchange.twin_index = layout->twin_index;
-            }
+            add_lattice_states(exchange, *layout, s.scale);
             observer->begin(exchange);
             if (!induce(exchange, observer, stop)) return limited(*limit);
             if (twin_search) {
@@ -242,8 +249,10 @@ std::optional<IntervalExchange> exchange_on(const Scene& scene) {
     BuildFailure failure;
     auto layout = build_layout(s, first.x, first.sheet, cap_of(scene), failure);
     if (!layout) return std::nullopt;
-    return finish_exchange(layout->size, layout->modulus, {}, std::move(layout->pieces),
-                           layout->first, layout->hits);
+    IntervalExchange exchange = finish_exchange(
+        layout->size, layout->modulus, {}, std::move(layout->pieces), layout->first, layout->hits);
+    add_lattice_states(exchange, *layout, s.scale);
+    return exchange;
 }
 
 } // namespace
