@@ -271,13 +271,29 @@ int main(int argc, char** argv) {
     // small k (default 3,000).
     bool quick = false;
     int climb = 3000;
+    std::vector<int> mazes;
     CLI::App app{"octagonal_induction_bench: the induction engine on scenes with diagonal mirrors"};
     app.add_flag("--quick", quick, "one run of each family");
     app.add_option("--climb", climb, "hill-climb rounds per small k")->capture_default_str();
+    app.add_option("--mazes", mazes,
+                   "only time random mazes of these sizes (5% absorbers, 3 a size, 1 from "
+                   "10^5 on): the "
+                   "exchange build's crossings at 10^4 and 10^5 elements");
     orthoray::bench::parse_options(app, "octagonal_induction_bench", argc, argv);
     const int repeats = quick ? 1 : 5;
     std::printf("%-34s %-8s %24s %8s %6s %9s %6s %9s\n", "family", "reason", "reflections",
                 "pieces", "log2N", "steps", "ratio", "seconds");
+    if (!mazes.empty()) {
+        std::mt19937_64 rng(14'005);
+        for (int n : mazes)
+            for (int seed = 0; seed < (n < 100000 ? 3 : 1); ++seed) {
+                const Run run = timed(random_maze(n, 5, rng), 1);
+                report("maze n=" + std::to_string(n) + " abs 5% (" + to_string(run.answer.engine) +
+                           ")",
+                       run);
+            }
+        return 0;
+    }
     const Rational big(Integer("1000000000000000000"));
     auto family = [&](const std::string& name, const Scene& scene) {
         const Run run = timed(scene, repeats);

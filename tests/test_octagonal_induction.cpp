@@ -222,20 +222,6 @@ TEST_CASE("the octagonal exchange is a bijection of its states", "[octagonal][in
     CHECK(checked > cases / 4);
 }
 
-TEST_CASE("induction runs on diagonal scenes write no certificate yet, and say so",
-          "[octagonal][induction]") {
-    // Refused (UnsupportedScene: the command line's exit 2) rather than a
-    // certificate the verifier could not read.
-    Scene s = diamond(1000);
-    shoot(s, Rational(1, 2), Rational(1, 2), 1, 2);
-    struct Watcher : InductionObserver {
-    } watcher;
-    SolveOptions o;
-    o.engine = Engine::induction;
-    o.induction_observer = &watcher;
-    CHECK_THROWS_AS(solve(s, o), UnsupportedScene);
-}
-
 TEST_CASE("octagonal induction answers a scene scaled by 10^17 or 10^40 as the scene itself",
           "[octagonal][induction]") {
     // Motion commutes with homotheties: the same answer on 128-bit and on
@@ -315,8 +301,7 @@ TEST_CASE("the default engine simulates a short octagonal orbit and induces a lo
     CHECK(a.engine == EngineUsed::induction);
     CHECK(a.reason == Reason::cycle);
     CHECK(a.reflections == 2 * m);
-    // With a certificate to write, or a cap within the budget, it only
-    // simulates (the octagonal induction writes no certificate).
+    // With a cap within the budget it only simulates.
     SolveOptions capped;
     capped.max_steps = 1000;
     a = solve(s, capped);

@@ -43,6 +43,15 @@ struct Transversal {
     Integer start;         // raw coordinate of its state number 0
 };
 
+// States of an octagonal scene (docs/induction-certificates.md, "Octagonal
+// scenes") on one line, with one direction: the lattice points
+// (x0 + i * step_x, y0 + i * step_y), i in [0, count), leaving along
+// (dx, dy), numbered by i. Lattice coordinates are scene ones times the
+// exchange's scale (the same on both axes).
+struct LiftedTransversal {
+    Integer x0, y0, step_x, step_y, count, dx, dy;
+};
+
 enum class PieceKind : std::uint8_t {
     reflect,  // the ray reflects at the image state
     escape,   // the ray meets nothing: the image only closes the exchange
@@ -65,6 +74,12 @@ struct IntervalExchange {
     Integer size;                      // N, the number of states
     // Rotated so that x is 0, sorted by start; pieces[0] is x alone.
     std::vector<ExchangePiece> pieces;
+    // Octagonal scenes only (empty otherwise): the lifted states as lattice
+    // points, laid end to end in raw coordinates (x is state first_index of
+    // lifted[first_transversal]), and on a double cover x's other lift.
+    std::vector<LiftedTransversal> lifted;
+    std::optional<std::size_t> twin_transversal;
+    Integer twin_index;
 };
 
 // The exchange the induction engine builds for `scene`: nothing unless the
@@ -73,9 +88,9 @@ struct IntervalExchange {
 // one), and the piece tables stay within the engine's size cap. For a
 // scene with diagonal elements it is the exchange on the eight-sheeted
 // cover (docs/induction.md, section 6), any direction allowed, with no
-// `transversals` or `scale` (its states are lifted states, not lattice
-// points); nothing when two states step to one there, or when the scene
-// has one-sided elements.
+// `transversals` (its states are lifted states: `lifted` lists them) and
+// one scale for both axes; nothing when two states step to one there, or
+// when the scene has one-sided elements.
 std::optional<IntervalExchange> exchange_of(const Scene& scene);
 
 // The exchange as another interval-exchange library reads it
@@ -99,6 +114,11 @@ public:
     virtual void invariant(std::size_t /*d*/) {}
     virtual void top_cycle(std::size_t /*d*/, const Integer& /*rounds*/) {}
     virtual void bottom_cycle(std::size_t /*r*/, const Integer& /*rounds*/) {}
+    // Octagonal double covers only: the lifted orbit of x closed without an
+    // event, and a second induction follows on the same exchange with x's
+    // twin split off as a piece of its own and the only event
+    // (docs/induction-certificates.md); its steps come next.
+    virtual void twin_search() {}
 };
 
 // What comes first on the orbit of x.

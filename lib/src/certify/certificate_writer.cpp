@@ -21,12 +21,17 @@ public:
 
     void begin(const IntervalExchange& exchange) override {
         writer_.induced_ = true;
-        statement("method", {"induction"}, false);
+        const bool octagonal = !exchange.lifted.empty();
+        statement("method", {octagonal ? "octagonal-induction" : "induction"}, false);
         std::ostream& out = writer_.out_;
         const bool json = writer_.format_ == CertificateFormat::jsonl;
         out << (json ? "{\"direction\": " : "direction");
         writer_.write_vector(writer_.first_reflection_direction_);
         out << (json ? "}\n" : "\n");
+        if (octagonal) {
+            octagonal_exchange(exchange);
+            return;
+        }
         statement("scale", {exchange.scale[0].get_str(), exchange.scale[1].get_str()});
         statement("modulus", {exchange.modulus.get_str()}, false);
         for (const Transversal& t : exchange.transversals)
@@ -35,17 +40,11 @@ public:
                        (t.negative & 1u) ? "-1" : "1", (t.negative & 2u) ? "-1" : "1"});
         statement("first",
                   {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
-        for (const ExchangePiece& p : exchange.pieces) {
-            const char* kind = p.kind == PieceKind::reflect  ? "reflect"
-                               : p.kind == PieceKind::escape ? "escape"
-                                                             : "absorbed";
-            if (p.hit)
-                statement("piece",
-                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str(), "hit"});
-            else
-                statement("piece",
-                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str()});
-        }
+        write_pieces(exchange);
+    }
+    void twin_search() override {
+        writer_.out_ << (writer_.format_ == CertificateFormat::text ? "twin-search\n"
+                                                                    : "{\"twin-search\": true}\n");
     }
     void top(std::size_t d, std::size_t r) override { step("top", d, std::to_string(r)); }
     void bottom(std::size_t r, std::size_t d) override { step("bottom", r, std::to_string(d)); }
@@ -59,6 +58,34 @@ public:
     }
 
 private:
+    // docs/induction-certificates.md, "Octagonal scenes": one scale, the
+    // lifted transversals as lattice points, x and its twin.
+    void octagonal_exchange(const IntervalExchange& exchange) {
+        statement("scale", {exchange.scale[0].get_str()}, false);
+        for (const LiftedTransversal& t : exchange.lifted)
+            statement("lifted",
+                      {t.x0.get_str(), t.y0.get_str(), t.step_x.get_str(), t.step_y.get_str(),
+                       t.count.get_str(), t.dx.get_str(), t.dy.get_str()});
+        statement("first",
+                  {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
+        if (exchange.twin_transversal)
+            statement("twin",
+                      {std::to_string(*exchange.twin_transversal), exchange.twin_index.get_str()});
+        write_pieces(exchange);
+    }
+    void write_pieces(const IntervalExchange& exchange) {
+        for (const ExchangePiece& p : exchange.pieces) {
+            const char* kind = p.kind == PieceKind::reflect  ? "reflect"
+                               : p.kind == PieceKind::escape ? "escape"
+                                                             : "absorbed";
+            if (p.hit)
+                statement("piece",
+                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str(), "hit"});
+            else
+                statement("piece",
+                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str()});
+        }
+    }
     void step(const char* kind, std::size_t a, const std::string& b) {
         statement("step", {kind, std::to_string(a), b});
     }

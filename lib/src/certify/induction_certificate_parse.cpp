@@ -18,6 +18,36 @@ int read_sign(const CertificateReader& in, std::size_t index) {
 
 } // namespace
 
+// The `piece` statements from the one `in` is on; at least one.
+std::vector<PieceSpec> parse_pieces(CertificateReader& in) {
+    std::vector<PieceSpec> pieces;
+    while (in.keyword() == "piece") {
+        if (in.size() < 5)
+            in.fail(in.size(), in.size() == 4 ? "a non-negative integer" : "a value");
+        if (in.size() > 6) in.fail(6, in.end_of_statement());
+        PieceSpec piece;
+        piece.start = in.count(1);
+        piece.length = in.count(2);
+        if (in.token(3) == "reflect")
+            piece.kind = Kind::reflect;
+        else if (in.token(3) == "escape")
+            piece.kind = Kind::escape;
+        else if (in.token(3) == "absorbed")
+            piece.kind = Kind::absorbed;
+        else
+            in.fail(3, "reflect, escape or absorbed");
+        piece.image = in.count(4);
+        if (in.size() == 6) {
+            if (in.token(5) != "hit") in.fail(5, std::string("'hit' or ") + in.end_of_statement());
+            piece.hit = true;
+        }
+        pieces.push_back(std::move(piece));
+        in.advance();
+    }
+    if (pieces.empty()) in.fail(0, "'piece'");
+    return pieces;
+}
+
 // Everything up to the last piece; `in` is left on the statement after it.
 Parsed parse_exchange(CertificateReader& in, int dim) {
     Parsed p;
@@ -53,30 +83,7 @@ Parsed parse_exchange(CertificateReader& in, int dim) {
     p.first_t = in.count(1);
     p.first_i = in.count(2);
     in.advance();
-    while (in.keyword() == "piece") {
-        if (in.size() < 5)
-            in.fail(in.size(), in.size() == 4 ? "a non-negative integer" : "a value");
-        if (in.size() > 6) in.fail(6, in.end_of_statement());
-        PieceSpec piece;
-        piece.start = in.count(1);
-        piece.length = in.count(2);
-        if (in.token(3) == "reflect")
-            piece.kind = Kind::reflect;
-        else if (in.token(3) == "escape")
-            piece.kind = Kind::escape;
-        else if (in.token(3) == "absorbed")
-            piece.kind = Kind::absorbed;
-        else
-            in.fail(3, "reflect, escape or absorbed");
-        piece.image = in.count(4);
-        if (in.size() == 6) {
-            if (in.token(5) != "hit") in.fail(5, std::string("'hit' or ") + in.end_of_statement());
-            piece.hit = true;
-        }
-        p.pieces.push_back(std::move(piece));
-        in.advance();
-    }
-    if (p.pieces.empty()) in.fail(0, "'piece'");
+    p.pieces = parse_pieces(in);
     return p;
 }
 

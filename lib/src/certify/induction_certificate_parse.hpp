@@ -69,6 +69,9 @@ struct Parsed {
 
 // Everything up to the last piece; `in` is left on the statement after it.
 Parsed parse_exchange(CertificateReader& in, int dim);
+// The `piece` statements from the one `in` is on (at least one); `in` is
+// left on the statement after them.
+std::vector<PieceSpec> parse_pieces(CertificateReader& in);
 // The `step` statement `in` is on.
 StepSpec parse_step(const CertificateReader& in);
 // The verdict from `answer` to `end` (the stream must end there) into `p`.

@@ -27,50 +27,8 @@ public:
         : exchange_(exchange), pieces_(pieces) {}
 
     void check_pieces() {
-        const std::size_t k = pieces_.size();
-        const PieceSpec& first = pieces_[0];
-        if (sgn(first.start) != 0 || first.length != 1)
-            fail("piece 0", "it is [" + str(first.start) + ", " + str(first.start + first.length) +
-                                "), not [0, 1) (x alone)");
-        Integer end = 0;
-        for (std::size_t j = 0; j < k; ++j) {
-            const PieceSpec& piece = pieces_[j];
-            const std::string where = "piece " + std::to_string(j);
-            if (sgn(piece.length) == 0) fail(where, "its length is 0");
-            if (piece.start != end)
-                fail(where, "it starts at " + str(piece.start) +
-                                ", but the pieces before it end at " + str(end) +
-                                " (domains must tile [0, N) in order)");
-            end += piece.length;
-            if (end > exchange_.state_count)
-                fail(where,
-                     "it ends at " + str(end) + ", beyond N = " + str(exchange_.state_count));
-        }
-        if (end != exchange_.state_count)
-            fail("pieces",
-                 "the domains end at " + str(end) + ", not at N = " + str(exchange_.state_count));
-        std::vector<std::size_t> by_image(k);
-        for (std::size_t j = 0; j < k; ++j) by_image[j] = j;
-        std::sort(by_image.begin(), by_image.end(), [&](std::size_t a, std::size_t b) {
-            return pieces_[a].image < pieces_[b].image;
-        });
-        end = 0;
-        for (std::size_t j : by_image) {
-            const PieceSpec& piece = pieces_[j];
-            if (piece.image != end)
-                fail("piece " + std::to_string(j),
-                     "its image starts at " + str(piece.image) + ", but " +
-                         (piece.image < end
-                              ? "an image before it ends at " + str(end)
-                              : "no image covers [" + str(end) + ", " + str(piece.image) + ")") +
-                         " (images must tile [0, N))");
-            end += piece.length;
-        }
-        if (end != exchange_.state_count)
-            fail("pieces",
-                 "the images end at " + str(end) + ", not at N = " + str(exchange_.state_count));
-
-        for (std::size_t j = 0; j < k; ++j) check_piece(j);
+        check_tiling(pieces_, exchange_.state_count);
+        for (std::size_t j = 0; j < pieces_.size(); ++j) check_piece(j);
     }
 
 private:
@@ -324,6 +282,43 @@ private:
 };
 
 } // namespace
+
+void check_tiling(const std::vector<PieceSpec>& pieces, const Integer& n) {
+    const std::size_t k = pieces.size();
+    const PieceSpec& first = pieces[0];
+    if (sgn(first.start) != 0 || first.length != 1)
+        fail("piece 0", "it is [" + str(first.start) + ", " + str(first.start + first.length) +
+                            "), not [0, 1) (x alone)");
+    Integer end = 0;
+    for (std::size_t j = 0; j < k; ++j) {
+        const PieceSpec& piece = pieces[j];
+        const std::string where = "piece " + std::to_string(j);
+        if (sgn(piece.length) == 0) fail(where, "its length is 0");
+        if (piece.start != end)
+            fail(where, "it starts at " + str(piece.start) + ", but the pieces before it end at " +
+                            str(end) + " (domains must tile [0, N) in order)");
+        end += piece.length;
+        if (end > n) fail(where, "it ends at " + str(end) + ", beyond N = " + str(n));
+    }
+    if (end != n) fail("pieces", "the domains end at " + str(end) + ", not at N = " + str(n));
+    std::vector<std::size_t> by_image(k);
+    for (std::size_t j = 0; j < k; ++j) by_image[j] = j;
+    std::sort(by_image.begin(), by_image.end(),
+              [&](std::size_t a, std::size_t b) { return pieces[a].image < pieces[b].image; });
+    end = 0;
+    for (std::size_t j : by_image) {
+        const PieceSpec& piece = pieces[j];
+        if (piece.image != end)
+            fail("piece " + std::to_string(j),
+                 "its image starts at " + str(piece.image) + ", but " +
+                     (piece.image < end
+                          ? "an image before it ends at " + str(end)
+                          : "no image covers [" + str(end) + ", " + str(piece.image) + ")") +
+                     " (images must tile [0, N))");
+        end += piece.length;
+    }
+    if (end != n) fail("pieces", "the images end at " + str(end) + ", not at N = " + str(n));
+}
 
 void check_pieces(const LatticeExchange& exchange, const std::vector<PieceSpec>& pieces) {
     PieceCheck(exchange, pieces).check_pieces();

@@ -11,6 +11,10 @@
 
 namespace orthoray::certify::induction_check {
 
+// The domains tile [0, n) in order, piece 0 is [0, 1), and the images tile
+// [0, n): throws CheckFailure otherwise.
+void check_tiling(const std::vector<PieceSpec>& pieces, const Integer& n);
+
 // Throws CheckFailure at the first piece whose claim fails.
 void check_pieces(const LatticeExchange& exchange, const std::vector<PieceSpec>& pieces);
 

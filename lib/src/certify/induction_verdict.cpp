@@ -66,8 +66,7 @@ void resimulate(const Scene& scene, const Parsed& stated) {
             outcome = "absorbed";
             break;
         }
-        for (int j = 0; j < dim; ++j)
-            if (e.flip[j]) v[j] = -v[j];
+        v = outgoing(v, e, dim).front(); // one direction: no splitters here
         k += 1;
         if (k == 1) {
             p1 = p;

@@ -13,6 +13,7 @@
 #include "certify/certificate_reader.hpp"
 #include "certify/illumination_verifier.hpp"
 #include "certify/induction_verifier.hpp"
+#include "certify/octagonal_induction_verifier.hpp"
 #include "certify/path_geometry.hpp"
 
 #include <array>
@@ -311,15 +312,21 @@ Verdict verify_certificate(const Scene& scene, std::istream& certificate,
         if (in.keyword() == "method") {
             certify::PathPrefix prefix;
             prefix.failure = path.failure();
-            // Induction needs a bijective step map of axis-aligned elements:
-            // two-sided ones only, no diagonals.
-            if (!prefix.failure && (scene.has_one_sided() || scene.has_diagonal()))
+            // Induction needs a bijective step map: two-sided elements
+            // only; diagonals only in the octagonal form, which reads the
+            // lattice for itself.
+            const bool octagonal = in.size() > 1 && in.token(1) == "octagonal-induction";
+            if (!prefix.failure && scene.has_one_sided())
                 prefix.failure = "invalid: induction certificates are for scenes without "
-                                 "one-sided elements or diagonals";
+                                 "one-sided elements";
+            if (!prefix.failure && scene.has_diagonal() && !octagonal)
+                prefix.failure = "invalid: a scene with diagonals needs `method "
+                                 "octagonal-induction`";
             prefix.points = path.points();
             prefix.absorbed = path.stopped();
             prefix.p1 = path.p1();
             prefix.v1 = path.v1();
+            if (octagonal) return certify::verify_octagonal_induction(scene, in, prefix);
             return certify::verify_induction(scene, in, prefix);
         }
         if (in.keyword() != "answer") in.fail(0, "'point', 'method' or 'answer'");

@@ -76,18 +76,23 @@ Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& optio
 // (docs/octagonal.md): simulate on the lattice for max(16384, 64 n)
 // reflections, which answers most scenes at once; if that has not
 // answered, induce on the eight-sheeted cover, whose cost does not grow
-// with the orbit. Without an exchange to induce on, and with a
-// certificate to write (the octagonal induction writes none yet), the
-// simulation goes on instead, from the start.
+// with the orbit. Without an exchange to induce on, the simulation goes on
+// instead, from the start. A certificate must hold one path from p0, so the
+// first simulation then runs without it and is repeated with it when it
+// answers (short runs: at most the budget), and the induction, which
+// writes p0 and p1 itself, writes nothing unless it answers.
 Answer solve_octagonal_automatically(const Scene& scene, const SolveOptions& options) {
-    if (options.path || options.induction_observer) return engine::solve_octagonal(scene, options);
+    const bool certify = options.path || options.induction_observer;
     const std::uint64_t budget = std::max<std::uint64_t>(16384, 64 * scene.elements.size());
-    if (options.max_steps && *options.max_steps <= budget)
+    if (options.max_steps && (*options.max_steps <= budget || certify))
         return engine::solve_octagonal(scene, options);
     SolveOptions first = options;
     first.max_steps = budget;
+    first.path = nullptr;
+    first.induction_observer = nullptr;
     const Answer simulated = engine::solve_octagonal(scene, first);
-    if (simulated.reason != Reason::limit || simulated.limit != Limit::steps) return simulated;
+    if (simulated.reason != Reason::limit || simulated.limit != Limit::steps)
+        return certify ? engine::solve_octagonal(scene, options) : simulated;
     if (std::optional<Answer> induced = induction::induce_octagonal(scene, options))
         return *induced;
     return engine::solve_octagonal(scene, options);

@@ -1,5 +1,7 @@
 #include "induction/octagonal_exchange.hpp"
 
+#include "induction/octagonal_crossings.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
@@ -94,39 +96,18 @@ private:
 };
 
 template <class Int>
-std::optional<Point<Int>> crossing(const Segment<Int>& p, const Segment<Int>& q) {
-    if (p.orientation == q.orientation) return std::nullopt;
-    const Segment<Int>& u = p.orientation < q.orientation ? p : q;
-    const Segment<Int>& v = p.orientation < q.orientation ? q : p;
-    Point<Int> at;
-    if (u.orientation == Orientation::vertical) {
-        // x = u.c; y from the other line.
-        const Int y = v.orientation == Orientation::horizontal ? v.c
-                      : v.orientation == Orientation::rising   ? Int(u.c + v.c)
-                                                               : Int(v.c - u.c);
-        at = {u.c, y};
-    } else if (u.orientation == Orientation::horizontal) {
-        at = {v.orientation == Orientation::rising ? Int(u.c - v.c) : Int(v.c - u.c), u.c};
-    } else { // y - x = u.c and y + x = v.c; both even after scaling
-        at = {Int((v.c - u.c) / 2), Int((v.c + u.c) / 2)};
-    }
-    for (const Segment<Int>* seg : {&u, &v}) {
-        const Int& pos = position(seg->orientation, at);
-        if (pos < seg->lo || seg->hi < pos) return std::nullopt;
-    }
-    return at;
-}
-
-template <class Int>
 void Builder<Int>::find_vertices() {
     const auto& segs = s_.segments;
-    for (std::size_t i = 0; i < segs.size(); ++i) {
+    for (const Segment<Int>& seg : segs) {
         poll();
-        vertices_.push_back(point_on(segs[i].orientation, segs[i].c, segs[i].lo));
-        vertices_.push_back(point_on(segs[i].orientation, segs[i].c, segs[i].hi));
-        for (std::size_t j = i + 1; j < segs.size(); ++j)
-            if (auto at = crossing(segs[i], segs[j])) vertices_.push_back(*at);
+        vertices_.push_back(point_on(seg.orientation, seg.c, seg.lo));
+        vertices_.push_back(point_on(seg.orientation, seg.c, seg.hi));
     }
+    constexpr Orientation all[] = {Orientation::vertical, Orientation::horizontal,
+                                   Orientation::rising, Orientation::falling};
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j)
+            crossings_of(segs, all[i], all[j], vertices_, [this] { poll(); });
     std::sort(vertices_.begin(), vertices_.end());
     vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
 }
@@ -432,11 +413,32 @@ std::optional<OctagonalLayout> Builder<Int>::build_all(const Point<Int>& x, int 
     const auto first = locate(x, x_sheet);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
     layout.first = raw(first->first, first->second);
+    layout.first_slot = first->first;
+    layout.first_index = raw(first->first, first->second) - slots_[first->first].start;
     // The twin: x's other lift, when two sheets share its direction.
     for (int g = 0; g < 8; ++g)
         if (g != x_sheet && s_.direction[static_cast<std::size_t>(g)] ==
                                 s_.direction[static_cast<std::size_t>(x_sheet)])
-            if (const auto twin = locate(x, g)) layout.twin = raw(twin->first, twin->second);
+            if (const auto twin = locate(x, g)) {
+                layout.twin = raw(twin->first, twin->second);
+                layout.twin_slot = twin->first;
+                layout.twin_index = *layout.twin - slots_[twin->first].start;
+            }
+    // Each slot's states as lattice points: point_of is affine in w, and
+    // the states of a slot are w = first + i * G.
+    layout.transversals.reserve(slots_.size());
+    for (const Slot& t : slots_) {
+        const Point<Int> q0 = point_of(t, t.first);
+        const Point<Int>& d = s_.direction[static_cast<std::size_t>(t.sheet)];
+        LiftedTransversal lifted{to_integer(q0[0]), to_integer(q0[1]), 0, 0, t.count,
+                                 to_integer(d[0]),  to_integer(d[1])};
+        if (t.count > 1) {
+            const Point<Int> q1 = point_of(t, t.first + modulus_);
+            lifted.step_x = to_integer(q1[0]) - lifted.x0;
+            lifted.step_y = to_integer(q1[1]) - lifted.y0;
+        }
+        layout.transversals.push_back(std::move(lifted));
+    }
     // The states whose segment passes the target: those at it, and for each
     // sheet the one a shot back from the target finds.
     for (int g = 0; g < 8; ++g) {

@@ -46,6 +46,11 @@ struct OctagonalLayout {
     // On a double cover, x's other lift: T^p(x) = twin means the physical
     // orbit returned after p reflections.
     std::optional<Integer> twin;
+    // The same states as lattice points, for certificates: one transversal
+    // a slot in raw order, and where x (and its twin) sit in them.
+    std::vector<LiftedTransversal> transversals;
+    std::size_t first_slot = 0, twin_slot = 0;
+    Integer first_index, twin_index;
 };
 
 enum class BuildFailure {
@@ -58,7 +63,8 @@ enum class BuildFailure {
 // x = (first_point, first_sheet) is the lifted state after reflection 1.
 // With `dump`, the transversals and the raw pieces are written there too
 // (`orthoray pieces` on a diagonal scene). `stop`, if set, is asked every
-// few thousand crossings and shots: the build is O(n^2) in the elements.
+// few thousand units of work (sweep events, shots, runs): the build may
+// take seconds on 10^4 elements.
 template <class Int>
 std::optional<OctagonalLayout>
 build_layout(const OctagonalScene<Int>& scene, const Point<Int>& first_point, int first_sheet,

@@ -67,6 +67,50 @@ FirstSegment<Int> first_segment(const OctagonalScene<Int>& s) {
     return out;
 }
 
+// The scene's own direction g v (v as the scene writes it, not primitive),
+// as a path certificate lists it.
+Vector scene_direction(const Scene& scene, int g) {
+    const auto& m = symmetries()[static_cast<std::size_t>(g)].m;
+    const Vector& v = scene.ray().direction;
+    return {m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1], Rational(0)};
+}
+
+// The exchange of the twin search: `exchange` with the piece holding x's
+// twin (rotated coordinate `twin`) cut so the twin is a piece of its own,
+// the only one with the hit mark (docs/induction-certificates.md).
+IntervalExchange with_twin_alone(IntervalExchange exchange, const Integer& twin) {
+    std::vector<ExchangePiece> cut;
+    cut.reserve(exchange.pieces.size() + 2);
+    for (ExchangePiece& p : exchange.pieces) {
+        p.hit = false;
+        if (twin < p.start || p.start + p.length <= twin) {
+            cut.push_back(std::move(p));
+            continue;
+        }
+        const Integer head = twin - p.start;
+        const Integer tail = p.length - head - 1;
+        if (head > 0) cut.push_back({p.start, head, p.image, p.kind, false});
+        cut.push_back({twin, 1, p.image + head, p.kind, true});
+        if (tail > 0) cut.push_back({twin + 1, tail, p.image + head + 1, p.kind, false});
+    }
+    exchange.pieces = std::move(cut);
+    return exchange;
+}
+
+// What a certificate (and exchange_of) tells about the states: the lattice
+// scale and the lifted transversals as lattice points, x and its twin.
+void add_lattice_states(IntervalExchange& exchange, const OctagonalLayout& layout,
+                        const Integer& scale) {
+    exchange.scale[0] = exchange.scale[1] = scale;
+    exchange.lifted = layout.transversals;
+    exchange.first_transversal = layout.first_slot;
+    exchange.first_index = layout.first_index;
+    if (layout.twin) {
+        exchange.twin_transversal = layout.twin_slot;
+        exchange.twin_index = layout.twin_index;
+    }
+}
+
 // The most pieces the exchange may have (as for the axis-parallel engine).
 std::size_t cap_of(const Scene& scene) {
     return piece_cap(scene.elements.size());
@@ -79,6 +123,21 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
     const auto begin = Clock::now();
     const OctagonalScene<Int> s = make_octagonal<Int>(scene);
     const FirstSegment<Int> first = first_segment(s);
+    // A certificate needs the path p0, p1 before the exchange; an answer
+    // before reflection 1 is left to the tracer's path certificate.
+    const bool certify = options.path || options.induction_observer;
+    if (first.answer && certify) return std::nullopt;
+    bool visited = false;
+    auto visit_prefix = [&] {
+        if (!options.path || visited) return;
+        visited = true;
+        Vector p1 = {Rational(to_integer(first.x[0]), s.scale),
+                     Rational(to_integer(first.x[1]), s.scale), Rational(0)};
+        p1[0].canonicalize();
+        p1[1].canonicalize();
+        options.path->visit(scene.ray().start, scene.ray().direction);
+        options.path->visit(p1, scene_direction(scene, first.sheet));
+    };
     if (first.answer) {
         Answer answer = *first.answer;
         answer.engine = EngineUsed::induction;
@@ -98,6 +157,7 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
         answer.reason = Reason::limit;
         answer.limit = which;
         answer.reflections = 1; // the first reflection was taken by a shot
+        visit_prefix();         // a partial certificate: the path up to it
         return answer;
     };
     BuildFailure failure;
@@ -106,8 +166,8 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
     if (failure == BuildFailure::stopped) return limited(*limit);
     if (!layout) return std::nullopt;
     if (stop(0)) return limited(*limit);
-    const IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {},
-                                                      layout->pieces, layout->first, layout->hits);
+    IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {}, layout->pieces,
+                                                layout->first, layout->hits);
     const std::optional<InducedOrbit> orbit = induce(exchange, nullptr, stop);
     if (!orbit) return limited(*limit);
     answer.stats.induction.pieces = exchange.pieces.size();
@@ -115,11 +175,14 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
     answer.stats.induction.steps = orbit->steps;
     answer.stats.induction.rounds = orbit->rounds;
     set_outcome(answer, *orbit);
-    if (orbit->event == ExchangeEvent::none && layout->twin) {
+    const bool twin_search = orbit->event == ExchangeEvent::none && layout->twin;
+    const Integer twin_rotated =
+        layout->twin ? Integer(lattice::floor_mod(*layout->twin - layout->first, layout->size))
+                     : Integer(0);
+    if (twin_search) {
         // On the double cover the lifted orbit closes after the physical
         // period p or after 2p, when T^p(x) is x's twin: mark the twin alone.
-        const IntervalExchange twin = finish_exchange(
-            layout->size, layout->modulus, {}, layout->pieces, layout->first, {*layout->twin});
+        const IntervalExchange twin = with_twin_alone(exchange, twin_rotated);
         const std::optional<InducedOrbit> half = induce(twin, nullptr, stop);
         if (!half) return limited(*limit);
         answer.stats.induction.steps += half->steps;
@@ -140,9 +203,27 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
                          : Integer(answer.reflections * 2);
         const Integer cap(static_cast<unsigned long>(*options.max_steps));
         if (needed > cap) {
+            // With a certificate the tracer walks up to the cap instead and
+            // writes the path so far.
+            if (certify) return std::nullopt;
             answer.reason = Reason::limit;
             answer.limit = Limit::steps;
             answer.reflections = cap;
+        }
+    }
+    if (certify) {
+        // Run again, streaming: the certificate gets the steps only once the
+        // answer is known to stand.
+        visit_prefix();
+        if (InductionObserver* observer = options.induction_observer) {
+            add_lattice_states(exchange, *layout, s.scale);
+            observer->begin(exchange);
+            if (!induce(exchange, observer, stop)) return limited(*limit);
+            if (twin_search) {
+                observer->twin_search();
+                if (!induce(with_twin_alone(exchange, twin_rotated), observer, stop))
+                    return limited(*limit);
+            }
         }
     }
     answer.stats.induction.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
@@ -168,20 +249,15 @@ std::optional<IntervalExchange> exchange_on(const Scene& scene) {
     BuildFailure failure;
     auto layout = build_layout(s, first.x, first.sheet, cap_of(scene), failure);
     if (!layout) return std::nullopt;
-    return finish_exchange(layout->size, layout->modulus, {}, std::move(layout->pieces),
-                           layout->first, layout->hits);
-}
-
-void refuse_certificates(const SolveOptions& options) {
-    if (options.path || options.induction_observer)
-        throw UnsupportedScene("the induction engine writes no certificates for scenes with "
-                               "diagonal elements yet (use --engine reference)");
+    IntervalExchange exchange = finish_exchange(
+        layout->size, layout->modulus, {}, std::move(layout->pieces), layout->first, layout->hits);
+    add_lattice_states(exchange, *layout, s.scale);
+    return exchange;
 }
 
 } // namespace
 
 std::optional<Answer> induce_octagonal(const Scene& scene, const SolveOptions& options) {
-    refuse_certificates(options);
     // A one-way mirror lets two states step to one: no bijection to induce
     // on, and the orbit may enter its cycle after a tail (docs/optics.md).
     if (scene.has_one_sided()) return std::nullopt;
