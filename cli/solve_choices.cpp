@@ -69,13 +69,15 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
         ->check(timeout_seconds());
     cmd->add_option("--max-memory", c.max_memory, max_memory_help)
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-    cmd->add_option("--engine", c.engine,
-                    "auto (default: simulate; in 2D, switch to induction once a short run has "
-                    "not answered), lattice (simulation on integer lattice states), induction "
-                    "(2D: Rauzy-Zorich induction on the piece tables, time polynomial in the "
-                    "input size; other dimensions are simulated), reference (naive rational O(n) "
-                    "scan per reflection, the test oracle), graph (explicit state graph; small "
-                    "scenes only)")
+    cmd->add_option(
+           "--engine", c.engine,
+           "auto (default: simulate; in 2D, switch to induction once a short run has "
+           "not answered), lattice (simulation on integer lattice states), induction "
+           "(2D: Rauzy-Zorich induction on the piece tables, time growing with the "
+           "pieces and log(reflections), polynomial as measured but not proven "
+           "(docs/induction.md); other dimensions are simulated), reference (naive rational O(n) "
+           "scan per reflection, the test oracle), graph (explicit state graph; small "
+           "scenes only)")
         ->check(CLI::IsMember(names(engine_names())));
     cmd->add_option("--cycle-detector", c.detector,
                     "first-state (default: compare with the state after reflection 1) or brent "
