@@ -1,4 +1,5 @@
-// The witness of a lit target in a search over branch states (the
+// The evidence of a search over branch states for a certificate: each
+// target's verdict in order, and the witness of a lit target (the
 // illumination search and the intensity search): the branch that gave the
 // target its candidate, replayed for a certificate. Its branch states are
 // found by following each state's parent back to a ray's start; the
@@ -11,6 +12,7 @@
 
 #include "engine/branch_state_set.hpp"
 #include "engine/stretch.hpp"
+#include "orthoray/answer.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -37,6 +39,26 @@ void replay_witness(const BranchStateSet& states, const EventStepper& stepper, P
                          observer.step(q, u);
                          return i > 0 || !stepper.passes(target, q, u, e);
                      });
+    }
+}
+
+// Each target's verdict in order, as both searches' observers take them:
+// `lit(t)` reports target t (from 0) lit and replays its witness; unlit and
+// unknown targets go to observer.unlit and observer.unknown (from 1).
+template <class Observer, class Lit>
+void report_targets(const Answer& answer, Observer& observer, Lit&& lit) {
+    for (std::size_t t = 0; t < answer.targets.size(); ++t) {
+        switch (answer.targets[t].status) {
+        case TargetAnswer::Status::lit:
+            lit(t);
+            break;
+        case TargetAnswer::Status::unlit:
+            observer.unlit(t + 1);
+            break;
+        case TargetAnswer::Status::unknown:
+            observer.unknown(t + 1);
+            break;
+        }
     }
 }
 

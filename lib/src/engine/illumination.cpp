@@ -233,20 +233,10 @@ private:
             states_.state(s, p, v);
             observer.branch(p, v, records_[s].ray, records_[s].reflections);
         }
-        for (std::size_t t = 0; t < answer.targets.size(); ++t) {
-            switch (answer.targets[t].status) {
-            case TargetAnswer::Status::lit:
-                observer.lit(t + 1, best_[t].label.reflections, best_[t].label.ray);
-                witness(t, observer);
-                break;
-            case TargetAnswer::Status::unlit:
-                observer.unlit(t + 1);
-                break;
-            case TargetAnswer::Status::unknown:
-                observer.unknown(t + 1);
-                break;
-            }
-        }
+        report_targets(answer, observer, [&](std::size_t t) {
+            observer.lit(t + 1, best_[t].label.reflections, best_[t].label.ray);
+            witness(t, observer);
+        });
     }
 
     void witness(std::size_t t, IlluminationObserver& observer) const {
