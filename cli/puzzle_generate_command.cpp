@@ -124,15 +124,8 @@ int run(const PuzzleGenerateArgs& args, const CLI::Option* timeout) {
         return yes;
     }
     PieceCoordinator coordinator(session.size, nullptr, nullptr);
-    const LazorPieceRunner runner = coordinator.runner();
-    try {
-        const int status = generate(args, &runner);
-        coordinator.finish();
-        return status;
-    } catch (...) {
-        coordinator.finish();
-        throw;
-    }
+    return coordinator.run_command(
+        [&](const LazorPieceRunner& runner) { return generate(args, &runner); });
 #else
     throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
                      "docs/puzzles.md)");

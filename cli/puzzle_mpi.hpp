@@ -29,11 +29,26 @@ public:
     // Call once, last, on every path (an exception too), or they wait.
     void finish();
 
+    // Rank 0's whole command: `command(runner)` with this coordinator's
+    // runner, then finish(), on the way out of an exception too.
+    template <class Command>
+    int run_command(Command&& command) {
+        const LazorPieceRunner pieces = runner();
+        try {
+            const int status = command(pieces);
+            finish();
+            return status;
+        } catch (...) {
+            finish();
+            throw;
+        }
+    }
+
+private:
     LazorPieceRunner runner() {
         return [this](const LazorSearchPieces& pieces) { return run(pieces); };
     }
 
-private:
     // Takes one request for work, if one came (false when none): the rank
     // is idle again, and the result it brings for the current search, if
     // any, is `arrived`.

@@ -185,16 +185,10 @@ int run(const PuzzleSolveArgs& args, const CLI::Option* max_nodes) {
         return yes;
     }
     PieceCoordinator coordinator(session.size, &stop, &nodes);
-    const LazorPieceRunner runner = coordinator.runner();
-    try {
-        const int status = search_level(args, max_nodes, stop, nodes, &runner,
-                                        static_cast<unsigned>(session.size));
-        coordinator.finish();
-        return status;
-    } catch (...) {
-        coordinator.finish();
-        throw;
-    }
+    return coordinator.run_command([&](const LazorPieceRunner& runner) {
+        return search_level(args, max_nodes, stop, nodes, &runner,
+                            static_cast<unsigned>(session.size));
+    });
 #else
     throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
                      "docs/puzzles.md)");
