@@ -4,6 +4,7 @@
 
 #include "orthoray/number.hpp"
 
+#include <optional>
 #include <string>
 
 namespace orthoray::certify::induction_check {
@@ -18,6 +19,26 @@ struct CheckFailure {
 [[noreturn]] inline void fail(const std::string& where, const std::string& what) {
     throw CheckFailure{"invalid: " + where + ": " + what};
 }
+
+// Runs the checks of a certificate as its statements arrive, until one
+// fails, and keeps that first failure (both induction verifiers' drivers).
+class FirstFailure {
+public:
+    // Runs `check` unless a check failed before.
+    template <class Check>
+    void guard(Check check) {
+        if (failure_) return;
+        try {
+            check();
+        } catch (const CheckFailure& failure) {
+            failure_ = failure.message;
+        }
+    }
+    const std::optional<std::string>& failure() const { return failure_; }
+
+private:
+    std::optional<std::string> failure_;
+};
 
 // a mod m in [0, m), m > 0.
 inline Integer floor_mod(const Integer& a, const Integer& m) {

@@ -43,7 +43,7 @@ public:
 
     // Checks 1 to 3, then sets up the replay.
     void begin() {
-        guard([&] {
+        checks_.guard([&] {
             const LatticeExchange exchange =
                 check_header_and_transversals(scene_, prefix_, parsed_);
             check_pieces(exchange, parsed_.pieces);
@@ -53,7 +53,7 @@ public:
 
     // Check 4, one step at a time as they are read (they are not kept).
     void step(const StepSpec& s) {
-        guard([&] { replay_->apply(s); });
+        checks_.guard([&] { replay_->apply(s); });
     }
 
     // After the verdict has been read into `stated`.
@@ -64,7 +64,7 @@ public:
         parsed_.reflections = stated.reflections;
         parsed_.period = stated.period;
         std::optional<Verdict> verdict;
-        guard([&] {
+        checks_.guard([&] {
             if (parsed_.reason == Reason::limit) {
                 if (parsed_.answer != "unknown")
                     fail("verdict", "answer " + parsed_.answer + " does not go with reason limit");
@@ -76,27 +76,16 @@ public:
             verdict = Verdict{true, check_verdict(parsed_, replay_->first_alone())};
             resimulate(scene_, parsed_);
         });
-        if (failure_) return {false, *failure_};
+        if (checks_.failure()) return {false, *checks_.failure()};
         return *verdict;
     }
 
 private:
-    // Runs `check` unless a check failed before; keeps the first failure.
-    template <class Check>
-    void guard(Check check) {
-        if (failure_) return;
-        try {
-            check();
-        } catch (const CheckFailure& failure) {
-            failure_ = failure.message;
-        }
-    }
-
     const Scene& scene_;
     const PathPrefix& prefix_;
     Parsed parsed_;
     std::optional<ReplayedExchange> replay_; // set once checks 1 to 3 pass
-    std::optional<std::string> failure_;
+    FirstFailure checks_;
 };
 
 } // namespace

@@ -92,7 +92,7 @@ public:
         : scene_(scene), prefix_(prefix), parsed_(std::move(parsed)) {}
 
     void begin() {
-        guard([&] {
+        checks_.guard([&] {
             check_header();
             check_transversals();
             check_octagonal_pieces(exchange_, parsed_.pieces);
@@ -101,12 +101,12 @@ public:
     }
 
     void step(const StepSpec& s) {
-        guard([&] { (twin_replay_ ? *twin_replay_ : *replay_).apply(s); });
+        checks_.guard([&] { (twin_replay_ ? *twin_replay_ : *replay_).apply(s); });
     }
 
     // `twin-search`: the main induction has ended; the second starts.
     void twin_search() {
-        guard([&] {
+        checks_.guard([&] {
             if (twin_replay_) fail("twin-search", "it appears twice");
             if (!twin_rotated_) fail("twin-search", "there is no `twin` line");
             const ReplayedPiece& x = replay_->first_alone();
@@ -118,7 +118,7 @@ public:
 
     Verdict finish(std::size_t steps, const Parsed& stated) {
         std::optional<Verdict> verdict;
-        guard([&] {
+        checks_.guard([&] {
             if (stated.reason == Reason::limit) {
                 if (stated.answer != "unknown")
                     fail("verdict", "answer " + stated.answer + " does not go with reason limit");
@@ -141,21 +141,11 @@ public:
             verdict = Verdict{true, check_verdict(stated, x)};
             resimulate(scene_, stated);
         });
-        if (failure_) return {false, *failure_};
+        if (checks_.failure()) return {false, *checks_.failure()};
         return *verdict;
     }
 
 private:
-    template <class Check>
-    void guard(Check check) {
-        if (failure_) return;
-        try {
-            check();
-        } catch (const CheckFailure& failure) {
-            failure_ = failure.message;
-        }
-    }
-
     Integer lattice(const Rational& x, const std::string& what) const {
         Rational v = x * parsed_.scale;
         v.canonicalize();
@@ -307,7 +297,7 @@ private:
     Integer p1x_, p1y_;
     std::optional<Integer> twin_rotated_;
     std::optional<ReplayedExchange> replay_, twin_replay_;
-    std::optional<std::string> failure_;
+    FirstFailure checks_;
 };
 
 } // namespace
