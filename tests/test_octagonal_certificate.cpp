@@ -314,3 +314,51 @@ TEST_CASE("solve --engine induction --certificate, verify and render on a huge d
         CHECK(test::slurp(svg).find("<svg") != std::string::npos);
     }
 }
+
+TEST_CASE("malformed octagonal induction statements are one located error",
+          "[octagonal][certificate][bad-input]") {
+    // The diamond |x| + |y| = 5 shot along (1, 3): its certificate's line 5
+    // is the method, lines 8 and 9 the first two transversals.
+    test::TempDir dir;
+    const std::string scene = dir.write("diamond.scene", "dim 2\n"
+                                                         "mirror / -5 0 0 5\n"
+                                                         "mirror \\ 0 5 5 0\n"
+                                                         "mirror / 0 -5 5 0\n"
+                                                         "mirror \\ -5 0 0 -5\n"
+                                                         "ray 1/2 1/2 1 3\n"
+                                                         "target 100 100\n");
+    const std::string cert = dir.path("diamond.cert");
+    REQUIRE(test::run_cli("solve --engine induction --certificate " + test::quote(cert) + " " +
+                          test::quote(scene))
+                .status == 1);
+    std::vector<std::string> lines;
+    {
+        std::istringstream in(read_file(cert));
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+    }
+    REQUIRE(lines.size() > 9);
+    REQUIRE(lines[4] == "method octagonal-induction");
+    const struct {
+        std::size_t line;
+        std::string text, message;
+    } cases[] = {
+        {4, "method octagonal", "bad.cert:5:8: found 'octagonal', expected 'induction'"},
+        {7, lines[7].substr(0, lines[7].rfind(' ')),
+         "bad.cert:8:" + std::to_string(lines[7].rfind(' ') + 1) +
+             ": found end of line, expected an integer"},
+        {8, "lifted 48 -192 120 120 two -1 3",
+         "bad.cert:9:24: found 'two', expected a non-negative integer"},
+    };
+    for (const auto& c : cases) {
+        std::vector<std::string> edited = lines;
+        edited[c.line] = c.text;
+        std::string text;
+        for (const std::string& line : edited) text += line + '\n';
+        const std::string bad = dir.write("bad.cert", text);
+        const test::CliResult r =
+            test::run_cli("verify " + test::quote(scene) + " " + test::quote(bad));
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err == bad.substr(0, bad.size() - 8) + c.message + "\n");
+    }
+}
