@@ -2,7 +2,8 @@
 // (docs/induction.md, section 6) for bench/RESULTS.md, and the search for
 // exchanges on which Rauzy-Zorich induction takes many steps against
 // k log2 N (issue 14, item 4). Not a test. Run:
-// build/bench/octagonal_induction_bench [--quick | --climb ROUNDS]
+// build/bench/octagonal_induction_bench [--quick | --climb ROUNDS |
+//   --mazes N... | --grid-mazes N...]
 #include <orthoray/orthoray.hpp>
 
 #include "parse_options.hpp"
@@ -64,7 +65,9 @@ std::string baseline(const Scene& scene, const Answer& induced) {
 void report(const std::string& name, const Run& run, const std::string& extra = "") {
     const auto& st = run.answer.stats.induction;
     const double klogn = static_cast<double>(st.pieces) * log2_of(st.states);
-    std::printf("%-34s %-8s %24s %8zu %6.0f %9llu %6.3f %9.4f%s\n", name.c_str(),
+    const std::string label =
+        run.answer.tail > 0 ? name + " tail " + run.answer.tail.get_str() : name;
+    std::printf("%-34s %-8s %24s %8zu %6.0f %9llu %6.3f %9.4f%s\n", label.c_str(),
                 to_string(run.answer.reason), run.answer.reflections.get_str().c_str(), st.pieces,
                 log2_of(st.states), static_cast<unsigned long long>(st.steps),
                 klogn > 0 ? static_cast<double>(st.steps) / klogn : 0.0, run.seconds,
@@ -113,7 +116,8 @@ Scene octagon(const Rational& w, const Rational& h, const Rational& c, const Vec
 
 // n random axis and diagonal mirrors (some absorbers) of length up
 // to 2% of a 10^18 box with mirror walls; direction (3, 7).
-Scene random_maze(int n, int absorber_percent, std::mt19937_64& rng) {
+Scene random_maze(int n, int absorber_percent, std::mt19937_64& rng,
+                  const Vector& direction = {3, 7, 0}) {
     const std::int64_t b = 1'000'000'000'000'000'000;
     auto r = [&] { return Rational(Integer(std::to_string(uniform(rng, 0, b)))); };
     Scene s;
@@ -135,8 +139,59 @@ Scene random_maze(int n, int absorber_percent, std::mt19937_64& rng) {
     s.add_mirror(1, lo, {{lo - 1, hi + 1}});
     s.add_mirror(1, hi, {{lo - 1, hi + 1}});
     s.ray().start = {r(), r(), 0};
-    s.ray().direction = {3, 7, 0};
+    s.ray().direction = direction;
     s.target() = {r(), r(), 0};
+    return s;
+}
+
+// n random elements on a 1000 x 1000 grid of spacing 10^15 (lengths of 1
+// to 20 cells, 5% absorbers) in a mirror box, the ray leaving a grid point
+// along `direction` (an axis or a diagonal): rays slide along diagonals into
+// vertices, so two states step to one and the induction walks between the
+// collisions (rho_walk.hpp).
+Scene random_grid_maze(int n, const Vector& direction, std::mt19937_64& rng) {
+    const Integer g("1000000000000000");
+    auto at = [&](std::int64_t lo, std::int64_t hi) {
+        return Rational(g * Integer(std::to_string(uniform(rng, lo, hi))));
+    };
+    Scene s;
+    for (int i = 0; i < n; ++i) {
+        const auto kind = uniform(rng, 1, 100) <= 5 ? ElementKind::absorber : ElementKind::mirror;
+        const Rational lo = at(1, 979), len = at(1, 20), c = at(1, 999);
+        const auto t = uniform(rng, 0, 3);
+        if (t < 2)
+            s.add(kind, static_cast<int>(t), c, {{lo, lo + len}});
+        else
+            s.add_diagonal(kind, lo, c, lo + len, t == 2 ? Rational(c + len) : Rational(c - len));
+    }
+    const Rational hi(g * 1000);
+    s.add_mirror(0, 0, {{0, hi}});
+    s.add_mirror(0, hi, {{0, hi}});
+    s.add_mirror(1, 0, {{0, hi}});
+    s.add_mirror(1, hi, {{0, hi}});
+    s.ray().start = {at(1, 999), at(1, 999), 0};
+    s.ray().direction = direction;
+    s.target() = {at(1, 999), at(1, 999), 0};
+    return s;
+}
+
+// The box [0, w] x [0, h] with a diagonal mirror of length sqrt(2) leaving
+// the bottom wall at (x0, 0), and a ray along (1, 1): a 45-degree billiard
+// whose orbit runs about w + h reflections before it meets the little
+// mirror. A ray sliding down along the mirror's line meets the wall alone at
+// (x0, 0); one arriving there along (1, -1) meets both and is sent back: two
+// states step to one, and the orbit may enter its cycle after a tail.
+Scene slide_box(const Integer& w, const Integer& h, const Integer& x0, const Rational& x,
+                const Rational& y) {
+    Scene s;
+    s.add_diagonal(ElementKind::mirror, Rational(x0), 0, Rational(x0 + 1), 1);
+    s.add_mirror(0, 0, {{0, Rational(h)}});
+    s.add_mirror(0, Rational(w), {{0, Rational(h)}});
+    s.add_mirror(1, 0, {{0, Rational(w)}});
+    s.add_mirror(1, Rational(h), {{0, Rational(w)}});
+    s.ray().start = {x, y, 0};
+    s.ray().direction = {1, 1, 0};
+    s.target() = {Rational(2 * w), Rational(2 * h), 0};
     return s;
 }
 
@@ -271,7 +326,7 @@ int main(int argc, char** argv) {
     // small k (default 3,000).
     bool quick = false;
     int climb = 3000;
-    std::vector<int> mazes;
+    std::vector<int> mazes, grid_mazes;
     CLI::App app{"octagonal_induction_bench: the induction engine on scenes with diagonal mirrors"};
     app.add_flag("--quick", quick, "one run of each family");
     app.add_option("--climb", climb, "hill-climb rounds per small k")->capture_default_str();
@@ -279,6 +334,9 @@ int main(int argc, char** argv) {
                    "only time random mazes of these sizes (5% absorbers, 3 a size, 1 from "
                    "10^5 on): the "
                    "exchange build's crossings at 10^4 and 10^5 elements");
+    app.add_option("--grid-mazes", grid_mazes,
+                   "only time random grid-aligned mazes of these sizes, rays along an axis and "
+                   "a diagonal (10 a size and direction), against the reference tracer");
     orthoray::bench::parse_options(app, "octagonal_induction_bench", argc, argv);
     const int repeats = quick ? 1 : 5;
     std::printf("%-34s %-8s %24s %8s %6s %9s %6s %9s\n", "family", "reason", "reflections",
@@ -294,6 +352,19 @@ int main(int argc, char** argv) {
             }
         return 0;
     }
+    if (!grid_mazes.empty()) {
+        std::mt19937_64 rng(14'006);
+        for (int n : grid_mazes)
+            for (const Vector& d : {Vector{1, 0, 0}, Vector{1, 1, 0}})
+                for (int seed = 0; seed < 10; ++seed) {
+                    const Scene scene = random_grid_maze(n, d, rng);
+                    const Run run = timed(scene, 3);
+                    report("grid n=" + std::to_string(n) + " (" + d[0].get_str() + ", " +
+                               d[1].get_str() + ") " + to_string(run.answer.engine),
+                           run, baseline(scene, run.answer));
+                }
+        return 0;
+    }
     const Rational big(Integer("1000000000000000000"));
     auto family = [&](const std::string& name, const Scene& scene) {
         const Run run = timed(scene, repeats);
@@ -307,6 +378,12 @@ int main(int argc, char** argv) {
     for (const Vector& d : {Vector{3, 7, 0}, Vector{1, 1000000001, 0}, Vector{1, 1, 0}})
         family("octagon ~1e18, (" + d[0].get_str() + ", " + d[1].get_str() + ")",
                octagon(w, h, Rational(Integer("123456789012345678")), d));
+    // Collisions: the walk between special states (rho_walk.hpp).
+    for (const char* side : {"1000", "1000000", "1000000000000000000"}) {
+        const Integer n(side);
+        family(std::string("slide box ~") + side + ", (1, 1)",
+               slide_box(n + 3, n - 11, n / 3 + 1, Rational(n / 2 + 5), Rational(n / 7 + 2)));
+    }
     std::mt19937_64 rng(14'004);
     for (int absorbers : {5, 0})
         for (int n : {100, 300, 1000}) {

@@ -203,36 +203,6 @@ std::vector<Transversal> ExchangeLayout<Num>::public_transversals() const {
     return out;
 }
 
-namespace {
-
-// Splits piece i at `offset` into [start, start + offset) and the rest.
-template <class Num>
-void split(std::vector<RawPieceOn<Num>>& pieces, std::size_t i, const Num& offset) {
-    RawPieceOn<Num> rest = pieces[i];
-    rest.start += offset;
-    rest.length -= offset;
-    if (rest.kind == PieceKind::reflect) rest.image += offset;
-    pieces[i].length = offset;
-    pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(i) + 1, std::move(rest));
-}
-
-// Makes the state at raw coordinate c a piece of its own; returns its index.
-template <class Num>
-std::size_t isolate(std::vector<RawPieceOn<Num>>& pieces, const Num& c) {
-    auto after =
-        std::upper_bound(pieces.begin(), pieces.end(), c,
-                         [](const Num& v, const RawPieceOn<Num>& p) { return v < p.start; });
-    std::size_t i = static_cast<std::size_t>(after - pieces.begin()) - 1;
-    if (pieces[i].start < c) {
-        split(pieces, i, Num(c - pieces[i].start));
-        ++i;
-    }
-    if (pieces[i].length > 1) split(pieces, i, Num(1));
-    return i;
-}
-
-} // namespace
-
 template <class Num>
 ExchangeOn<Num>
 finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal> transversals,
@@ -250,8 +220,8 @@ finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal>
     }
     if (at != n) throw std::logic_error("the tables' pieces do not tile the states");
 
-    isolate(pieces, raw_first);
-    for (const Num& h : raw_hits) pieces[isolate(pieces, h)].hit = true;
+    isolate_state(pieces, raw_first);
+    for (const Num& h : raw_hits) pieces[isolate_state(pieces, h)].hit = true;
 
     // Close the holes: escaping and absorbed pieces, in domain order, onto
     // the states no piece maps to, in order.

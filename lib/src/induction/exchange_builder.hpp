@@ -136,6 +136,33 @@ struct RawPieceOn {
 };
 using RawPiece = RawPieceOn<Integer>;
 
+// Splits piece i of `pieces` (sorted by start) at `offset` into
+// [start, start + offset) and the rest.
+template <class Num>
+void split_piece(std::vector<RawPieceOn<Num>>& pieces, std::size_t i, const Num& offset) {
+    RawPieceOn<Num> rest = pieces[i];
+    rest.start += offset;
+    rest.length -= offset;
+    if (rest.kind == PieceKind::reflect) rest.image += offset;
+    pieces[i].length = offset;
+    pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(i) + 1, std::move(rest));
+}
+
+// Makes the state at raw coordinate c a piece of its own; returns its index.
+template <class Num>
+std::size_t isolate_state(std::vector<RawPieceOn<Num>>& pieces, const Num& c) {
+    auto after =
+        std::upper_bound(pieces.begin(), pieces.end(), c,
+                         [](const Num& v, const RawPieceOn<Num>& p) { return v < p.start; });
+    std::size_t i = static_cast<std::size_t>(after - pieces.begin()) - 1;
+    if (pieces[i].start < c) {
+        split_piece(pieces, i, Num(c - pieces[i].start));
+        ++i;
+    }
+    if (pieces[i].length > 1) split_piece(pieces, i, Num(1));
+    return i;
+}
+
 // An exchange on the build's integers: IntervalExchange's data with the
 // pieces as the build made them (RawPieceOn, rotated so that x is 0 and
 // sorted by start), for the induction to read without converting each

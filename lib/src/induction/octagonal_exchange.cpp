@@ -1,5 +1,6 @@
 #include "induction/octagonal_exchange.hpp"
 
+#include "induction/collisions.hpp"
 #include "induction/octagonal_crossings.hpp"
 
 #include <algorithm>
@@ -75,6 +76,10 @@ private:
         return modulus_ == 0 ? t.start : Integer(t.start + (w - t.first) / modulus_);
     }
     Point<Int> point_of(const Slot& t, const Integer& w) const;
+    // The other lift of (q, g), when two sheets share g's direction (a
+    // double cover) and it is a state of the class; by raw number too.
+    std::optional<std::pair<std::size_t, Integer>> twin_at(const Point<Int>& q, int g) const;
+    std::optional<Integer> twin_of(const Integer& raw_state) const;
     // Where the state (slot, w) steps to.
     struct Step {
         PieceKind kind = PieceKind::reflect;
@@ -281,6 +286,28 @@ std::optional<std::pair<std::size_t, Integer>> Builder<Int>::locate(const Point<
 }
 
 template <class Int>
+std::optional<std::pair<std::size_t, Integer>> Builder<Int>::twin_at(const Point<Int>& q,
+                                                                     int g) const {
+    const auto& d = s_.direction;
+    for (int h = 0; h < 8; ++h)
+        if (h != g && d[static_cast<std::size_t>(h)] == d[static_cast<std::size_t>(g)])
+            return locate(q, h);
+    return std::nullopt;
+}
+
+template <class Int>
+std::optional<Integer> Builder<Int>::twin_of(const Integer& raw_state) const {
+    const auto after =
+        std::upper_bound(slots_.begin(), slots_.end(), raw_state,
+                         [](const Integer& r, const Slot& t) { return r < t.start; });
+    const Slot& t = *(after - 1);
+    const Integer w = modulus_ == 0 ? t.first : Integer(t.first + (raw_state - t.start) * modulus_);
+    const auto twin = twin_at(point_of(t, w), t.sheet);
+    if (!twin) return std::nullopt;
+    return raw(twin->first, twin->second);
+}
+
+template <class Int>
 typename Builder<Int>::Step Builder<Int>::step(std::size_t slot, const Integer& w) const {
     const Slot& t = slots_[slot];
     const Point<Int> q = point_of(t, w);
@@ -395,19 +422,20 @@ std::optional<OctagonalLayout> Builder<Int>::build_all(const Point<Int>& x, int 
         }
     }
 
-    // The images of the reflecting pieces must not overlap: else two states
-    // step to one and no bijection closes the holes.
-    std::vector<std::pair<Integer, Integer>> images;
-    for (const RawPiece& p : pieces_)
-        if (p.kind == PieceKind::reflect) images.emplace_back(p.image, p.length);
-    std::sort(images.begin(), images.end());
-    for (std::size_t i = 1; i < images.size(); ++i)
-        if (images[i - 1].first + images[i - 1].second > images[i].first) {
-            failure = BuildFailure::not_injective;
-            return std::nullopt;
-        }
+    // Where two images overlap, two states step to one (collisions.hpp).
+    std::optional<std::vector<Collision>> collisions = find_collisions(pieces_);
+    if (!collisions) {
+        failure = BuildFailure::not_injective;
+        return std::nullopt;
+    }
 
     OctagonalLayout layout;
+    for (const Collision& c : *collisions)
+        for (const Integer& r : {c.state, c.join})
+            if (auto twin = twin_of(r)) layout.twins.emplace_back(r, *twin);
+    std::sort(layout.twins.begin(), layout.twins.end());
+    layout.twins.erase(std::unique(layout.twins.begin(), layout.twins.end()), layout.twins.end());
+    layout.collisions = std::move(*collisions);
     layout.size = size_;
     layout.modulus = modulus_;
     const auto first = locate(x, x_sheet);
@@ -416,14 +444,11 @@ std::optional<OctagonalLayout> Builder<Int>::build_all(const Point<Int>& x, int 
     layout.first_slot = first->first;
     layout.first_index = raw(first->first, first->second) - slots_[first->first].start;
     // The twin: x's other lift, when two sheets share its direction.
-    for (int g = 0; g < 8; ++g)
-        if (g != x_sheet && s_.direction[static_cast<std::size_t>(g)] ==
-                                s_.direction[static_cast<std::size_t>(x_sheet)])
-            if (const auto twin = locate(x, g)) {
-                layout.twin = raw(twin->first, twin->second);
-                layout.twin_slot = twin->first;
-                layout.twin_index = *layout.twin - slots_[twin->first].start;
-            }
+    if (const auto twin = twin_at(x, x_sheet)) {
+        layout.twin = raw(twin->first, twin->second);
+        layout.twin_slot = twin->first;
+        layout.twin_index = *layout.twin - slots_[twin->first].start;
+    }
     // Each slot's states as lattice points: point_of is affine in w, and
     // the states of a slot are w = first + i * G.
     layout.transversals.reserve(slots_.size());
@@ -509,6 +534,9 @@ std::optional<OctagonalLayout> build_layout(const OctagonalScene<Int>& scene,
         std::swap(builder.pieces(), layout->pieces);
         builder.dump(*dump);
         std::swap(builder.pieces(), layout->pieces);
+        for (const Collision& c : layout->collisions)
+            *dump << "collision " << c.state << " -> " << c.join << ": another piece steps to "
+                  << c.join << " too\n";
     }
     return layout;
 }

@@ -26,6 +26,7 @@
 // (a run that is not a translation would be a bug, and throws).
 #pragma once
 
+#include "induction/collisions.hpp"
 #include "induction/exchange_builder.hpp"
 #include "induction/octagonal_geometry.hpp"
 
@@ -51,11 +52,19 @@ struct OctagonalLayout {
     std::vector<LiftedTransversal> transversals;
     std::size_t first_slot = 0, twin_slot = 0;
     Integer first_index, twin_index;
+    // Where two states step to one (collisions.hpp): empty when the step
+    // map is a bijection. `pieces` are the true map, images overlapping at
+    // the joins; the engine cuts the collisions' states before inducing.
+    std::vector<Collision> collisions;
+    // On a double cover, (raw, its other lift) for every state the
+    // collisions name, sorted: the walk counts the two lifts as one
+    // physical state.
+    std::vector<std::pair<Integer, Integer>> twins;
 };
 
 enum class BuildFailure {
     none,
-    not_injective, // two states step to one (a ray sliding along a diagonal into a vertex)
+    not_injective, // two images share more than one state (collisions.hpp)
     too_large,     // more pieces than `max_pieces`
     stopped,       // `stop` said so (a time limit, a signal)
 };

@@ -6,6 +6,7 @@
 #include "induction/induction_engine.hpp"
 #include "induction/octagonal_exchange.hpp"
 #include "induction/rauzy_induction.hpp"
+#include "induction/rho_walk.hpp"
 
 #include <chrono>
 
@@ -116,6 +117,61 @@ std::size_t cap_of(const Scene& scene) {
     return piece_cap(scene.elements.size());
 }
 
+// Applies --max-steps as a simulation would: on diagonal scenes every
+// simulation runs Brent's detector (engine::may_have_tail), which notices a
+// cycle of period p entered at state mu at reflection 2^k + p (2^k >= mu,
+// p), as the graph engine reports it too; past 2^62 that is beyond any cap
+// anyway. False when a certificate is wanted and the cap cuts the answer:
+// the tracer then walks up to the cap and writes the path so far.
+bool capped(Answer& answer, const SolveOptions& options) {
+    if (!options.max_steps) return true;
+    Integer needed = answer.reflections;
+    if (answer.reason == Reason::cycle)
+        needed = answer.reflections < (Integer(1) << 62)
+                     ? Integer(static_cast<unsigned long>(engine::brent_detection(
+                           answer.tail.get_ui() + 1, answer.period().get_ui())))
+                     : Integer(answer.reflections * 2);
+    const Integer cap(static_cast<unsigned long>(*options.max_steps));
+    if (needed <= cap) return true;
+    if (options.path || options.induction_observer) return false;
+    answer.reason = Reason::limit;
+    answer.limit = Limit::steps;
+    answer.reflections = cap;
+    answer.tail = 0;
+    return true;
+}
+
+Answer finished(Answer& answer, std::chrono::steady_clock::time_point begin) {
+    answer.stats.induction.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return answer;
+}
+
+// The orbit of x on a layout with collisions (rho_walk.hpp); false when
+// `stop` ended it.
+bool walk_collisions(const OctagonalLayout& layout, Answer& answer,
+                     const std::function<bool(std::uint64_t)>& stop) {
+    RhoMap map{layout.size,  layout.modulus, layout.pieces, layout.collisions,
+               layout.twins, layout.first,   layout.twin,   layout.hits};
+    cut_collisions(map.pieces, map.collisions);
+    const std::optional<RhoOrbit> rho = walk_rho(map, stop);
+    if (!rho) return false;
+    answer.stats.induction.pieces = map.pieces.size();
+    answer.stats.induction.states = map.size;
+    answer.stats.induction.steps = rho->steps;
+    answer.stats.induction.rounds = rho->rounds;
+    InducedOrbit orbit;
+    orbit.event = rho->event;
+    orbit.offset = rho->offset;
+    orbit.period = rho->period;
+    set_outcome(answer, orbit);
+    if (rho->event == ExchangeEvent::none) {
+        answer.tail = rho->tail;
+        answer.reflections = rho->tail + rho->period;
+    }
+    return true;
+}
+
 // nullopt when there is no exchange to induce on (see induce_octagonal).
 template <class Int>
 std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) {
@@ -166,6 +222,16 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
     if (failure == BuildFailure::stopped) return limited(*limit);
     if (!layout) return std::nullopt;
     if (stop(0)) return limited(*limit);
+    if (!layout->collisions.empty()) {
+        // Two states step to one: the walk between special states
+        // (rho_walk.hpp). Its certificate would be a chain of inductions,
+        // which the certificate format does not have: the tracer's path
+        // certifies such answers instead.
+        if (certify) return std::nullopt;
+        if (!walk_collisions(*layout, answer, stop)) return limited(*limit);
+        if (!capped(answer, options)) return std::nullopt;
+        return finished(answer, begin);
+    }
     IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {}, layout->pieces,
                                                 layout->first, layout->hits);
     const std::optional<InducedOrbit> orbit = induce(exchange, nullptr, stop);
@@ -189,28 +255,7 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
         answer.stats.induction.rounds += half->rounds;
         if (half->event == ExchangeEvent::hit) answer.reflections = half->offset;
     }
-    if (options.max_steps) {
-        // As a simulation would: on diagonal scenes every simulation runs
-        // Brent's detector (engine::may_have_tail), which notices a cycle of
-        // period p, entered at state 1, at reflection 2^k + p (2^k >= p),
-        // as the graph engine reports it too. Past 2^62 that is beyond any
-        // cap anyway.
-        Integer needed = answer.reflections;
-        if (answer.reason == Reason::cycle)
-            needed = answer.reflections < (Integer(1) << 62)
-                         ? Integer(static_cast<unsigned long>(
-                               engine::brent_detection(1, answer.reflections.get_ui())))
-                         : Integer(answer.reflections * 2);
-        const Integer cap(static_cast<unsigned long>(*options.max_steps));
-        if (needed > cap) {
-            // With a certificate the tracer walks up to the cap instead and
-            // writes the path so far.
-            if (certify) return std::nullopt;
-            answer.reason = Reason::limit;
-            answer.limit = Limit::steps;
-            answer.reflections = cap;
-        }
-    }
+    if (!capped(answer, options)) return std::nullopt; // the tracer writes the path to the cap
     if (certify) {
         // Run again, streaming: the certificate gets the steps only once the
         // answer is known to stand.
@@ -226,8 +271,7 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
             }
         }
     }
-    answer.stats.induction.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
-    return answer;
+    return finished(answer, begin);
 }
 
 template <class Int>
@@ -248,7 +292,7 @@ std::optional<IntervalExchange> exchange_on(const Scene& scene) {
     if (!first.reflects) return std::nullopt;
     BuildFailure failure;
     auto layout = build_layout(s, first.x, first.sheet, cap_of(scene), failure);
-    if (!layout) return std::nullopt;
+    if (!layout || !layout->collisions.empty()) return std::nullopt; // no bijection
     IntervalExchange exchange = finish_exchange(
         layout->size, layout->modulus, {}, std::move(layout->pieces), layout->first, layout->hits);
     add_lattice_states(exchange, *layout, s.scale);

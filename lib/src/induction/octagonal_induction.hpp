@@ -35,7 +35,7 @@ std::optional<IntervalExchange> octagonal_exchange_of(const Scene& scene);
 // Writes the first-return map on the cover (`orthoray pieces`): its
 // transversals and raw pieces, on the class of the orbit of the state after
 // reflection 1. Returns the number of pieces, nothing when there is no
-// reflection or no bijection.
+// reflection or no exchange (two images sharing more than one state).
 std::optional<std::size_t> write_octagonal_pieces(const Scene& scene, std::ostream& out);
 
 } // namespace orthoray::induction
