@@ -111,6 +111,11 @@ struct Scene {
     bool has_one_sided() const;
     // Some element lies on a diagonal (an octagonal maze, docs/octagonal.md).
     bool has_diagonal() const;
+    // Every number in lowest terms. GMP compares and hashes rationals
+    // correctly only so; the readers and the builders below keep them so,
+    // but code may set a ray's start to Rational(2, 4) directly.
+    bool in_lowest_terms() const;
+    void to_lowest_terms();
 
     // Builders for code and tests; `extent` lists the other axes' [lo, hi]
     // pairs in axis order (x before y before z).

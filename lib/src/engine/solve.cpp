@@ -110,6 +110,13 @@ const std::map<std::string, Engine>& engine_names() {
 }
 
 Answer solve(const Scene& scene, const SolveOptions& options) {
+    // A number out of lowest terms compares wrongly in GMP: every engine
+    // would answer a different scene (Scene::in_lowest_terms).
+    if (!scene.in_lowest_terms()) {
+        Scene lowest = scene;
+        lowest.to_lowest_terms();
+        return solve(lowest, options);
+    }
     // The intensity question has one search, stepping on the lattices or,
     // for --engine reference, with the rational scan (docs/intensity.md).
     if (options.min_intensity) {

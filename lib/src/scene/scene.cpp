@@ -93,6 +93,41 @@ void Scene::add_diagonal(ElementKind kind, const Rational& x0, const Rational& y
     elements.push_back(e);
 }
 
+namespace {
+
+bool lowest(const Rational& q) {
+    return sgn(q.get_den()) > 0 && Integer(gcd(q.get_num(), q.get_den())) == 1;
+}
+
+// Calls f on every number of the scene.
+template <class S, class F>
+void each_number(S& scene, F f) {
+    for (auto& e : scene.elements)
+        for (int j = 0; j < 3; ++j) {
+            f(e.lo[j]);
+            f(e.hi[j]);
+        }
+    for (auto& r : scene.rays)
+        for (int j = 0; j < 3; ++j) {
+            f(r.start[j]);
+            f(r.direction[j]);
+        }
+    for (auto& t : scene.targets)
+        for (int j = 0; j < 3; ++j) f(t[j]);
+}
+
+} // namespace
+
+bool Scene::in_lowest_terms() const {
+    bool all = true;
+    each_number(*this, [&](const Rational& q) { all = all && lowest(q); });
+    return all;
+}
+
+void Scene::to_lowest_terms() {
+    each_number(*this, [](Rational& q) { q.canonicalize(); });
+}
+
 void Scene::add(ElementKind kind, int axis, const Rational& offset,
                 const std::vector<std::pair<Rational, Rational>>& extent, Side side) {
     if (axis < 0 || axis >= dim || static_cast<int>(extent.size()) != dim - 1)
