@@ -360,7 +360,8 @@ int main(int argc, char** argv) {
                     const Scene scene = random_grid_maze(n, d, rng);
                     const Run run = timed(scene, 3);
                     report("grid n=" + std::to_string(n) + " (" + d[0].get_str() + ", " +
-                               d[1].get_str() + ") " + to_string(run.answer.engine),
+                               d[1].get_str() + ") " + to_string(run.answer.engine) +
+                               (exchange_of(scene) ? "" : " walk"),
                            run, baseline(scene, run.answer));
                 }
         return 0;
