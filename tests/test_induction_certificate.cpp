@@ -866,8 +866,9 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
     SECTION("truncated and malformed") {
         expect_invalid(h, replace(c, "end\n", ""), "incomplete certificate");
         expect_invalid(h, c.substr(0, c.find("step equal 0 2")), "incomplete certificate");
-        expect_malformed(h, replace(c, "piece 1 1 escape 4", "piece 1 1 escaped 4"),
-                         "<test>:13:11: found 'escaped', expected reflect, escape or absorbed");
+        expect_malformed(
+            h, replace(c, "piece 1 1 escape 4", "piece 1 1 escaped 4"),
+            "<test>:13:11: found 'escaped', expected reflect, escape, absorbed or cut");
         expect_malformed(h, replace(c, "transversal 1 0 0 6 1 1", "transversal 1 0 0 6 1 2"),
                          "<test>:10:23: found '2', expected 1 or -1");
         expect_malformed(h, replace(c, "step top 2 0", "step top 2"),

@@ -1,6 +1,7 @@
 // Induction certificates of octagonal scenes (docs/induction-certificates.md,
 // "Octagonal scenes"): the engine's certificates of random octagonal
-// trajectories verify in both formats, edited ones are rejected, and the
+// trajectories (walks between collisions among them) verify in both
+// formats, edited ones are rejected, and the
 // closed forms of the diamond and the right triangle with sides 10^18 are
 // certified and verified.
 #include "support/case_count.hpp"
@@ -130,6 +131,23 @@ std::string without_line(const std::string& text, const std::string& prefix) {
     return {};
 }
 
+// A cut piece's join moved by +-1..3 (a walk certificate's claim that the
+// ray steps there); empty when there is no cut piece.
+std::string join_nudged(const std::string& text, std::mt19937_64& rng) {
+    std::vector<std::string> lines = lines_of(text);
+    std::vector<std::size_t> cuts;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (lines[i].rfind("piece ", 0) == 0 && words_of(lines[i])[3] == "cut") cuts.push_back(i);
+    if (cuts.empty()) return {};
+    const std::size_t at = cuts[test::pick_index(rng, 0, cuts.size() - 1)];
+    std::vector<std::string> w = words_of(lines[at]);
+    const Integer join(w[5]);
+    w[5] = Integer(join + test::pick(rng, 1, 3)).get_str();
+    lines[at].clear();
+    for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
+    return joined(lines);
+}
+
 // A piece's kind swapped for another: the claim about its states changes.
 std::string rekinded(const std::string& text, std::mt19937_64& rng) {
     std::vector<std::string> lines = lines_of(text);
@@ -154,7 +172,7 @@ TEST_CASE("octagonal induction certificates of random scenes verify, edited ones
     std::mt19937_64 rng(14'401);
     test::RandomOctagonalShape shape;
     const int cases = test::case_count(600);
-    int certified = 0, jsonl = 0, twins = 0, tampered = 0, rejected = 0;
+    int certified = 0, jsonl = 0, twins = 0, walks = 0, tails = 0, tampered = 0, rejected = 0;
     int by_reason[4] = {};
     for (int i = 0; i < cases; ++i) {
         shape.max_elements = 2 + i % 10;
@@ -174,6 +192,10 @@ TEST_CASE("octagonal induction certificates of random scenes verify, edited ones
         ++certified;
         jsonl += json;
         twins += c.text.find("twin-search") != std::string::npos;
+        if (c.text.find("walk-search") != std::string::npos) {
+            ++walks;
+            tails += c.answer.reason == Reason::cycle && c.answer.tail > 0;
+        }
         ++by_reason[static_cast<int>(c.answer.reason)];
         if (json) continue; // the edits below are on the text format
         // A count, a position, a length, an image, a kind, a step, the
@@ -189,7 +211,11 @@ TEST_CASE("octagonal induction certificates of random scenes verify, edited ones
                                      nudged(c.text, "first", 2, rng),
                                      nudged(c.text, "twin", 2, rng),
                                      without_line(c.text, "twin-search"),
-                                     without_line(c.text, "twin ")};
+                                     without_line(c.text, "twin "),
+                                     nudged(c.text, "walk-search", 1, rng),
+                                     nudged(c.text, "walk-search", 3, rng),
+                                     without_line(c.text, "walk-search"),
+                                     join_nudged(c.text, rng)};
         for (const std::string& bad : edits) {
             if (bad.empty()) continue;
             const Outcome t = test::verify(s, bad);
@@ -209,8 +235,11 @@ TEST_CASE("octagonal induction certificates of random scenes verify, edited ones
     }
     WARN("certified " << certified << " (hit/escape/absorbed/cycle " << by_reason[0] << "/"
                       << by_reason[1] << "/" << by_reason[2] << "/" << by_reason[3] << ", " << jsonl
-                      << " as JSON Lines, " << twins << " with a twin search), edited " << tampered
+                      << " as JSON Lines, " << twins << " with a twin search, " << walks
+                      << " walks, " << tails << " with a tail), edited " << tampered
                       << ": rejected " << rejected);
+    CHECK(walks >= cases / 20);
+    CHECK(tails >= 1);
     CHECK(certified >= cases / 4);
     for (int count : by_reason) CHECK(count >= cases / 100);
     CHECK(twins > 0);

@@ -6,6 +6,8 @@
 // after 1 reflection) and target 3 unlit. A third scene carries
 // intensities (docs/intensity.md): a valid certificate for it must give the
 // answer the search gives, at the certificate's threshold if it has one.
+// A fourth, where two states step to one, has a walk certificate
+// (docs/induction-certificates.md, "The walk").
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
@@ -82,8 +84,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              "target 3 0\n"
                              "target -2 0\n"
                              "target 0 5\n");
+    // Two states step to one here (a ray slides along the '/' into the
+    // wall): its induction certificate is a walk, and the cycle has a tail.
+    static const orthoray::Scene slide = orthoray::read_scene("dim 2\n"
+                                                              "mirror / 3 0 4 1\n"
+                                                              "mirror x 0 y 0 7\n"
+                                                              "mirror x 11 y 0 7\n"
+                                                              "mirror y 0 x 0 11\n"
+                                                              "mirror y 7 x 0 11\n"
+                                                              "ray 5 2 1 1\n"
+                                                              "target 22 0\n");
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     check(box, bytes, "hit, 6 reflections");
+    check(slide, bytes, "cycle, 13 reflections");
     check(split, bytes, "unlit, 1 reflections,");
     check_intensity(corridor, bytes);
     return 0;

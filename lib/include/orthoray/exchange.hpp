@@ -80,6 +80,11 @@ struct IntervalExchange {
     std::vector<LiftedTransversal> lifted;
     std::optional<std::size_t> twin_transversal;
     Integer twin_index;
+    // Octagonal scenes where two states step to one (docs/induction.md,
+    // "Two states stepping to one"): (state, join) in rotated coordinates
+    // for every state cut out of the exchange; its piece is a dead end
+    // here, though the ray steps to the join.
+    std::vector<std::pair<Integer, Integer>> cuts;
 };
 
 // The exchange the induction engine builds for `scene`: nothing unless the
@@ -119,6 +124,11 @@ public:
     // twin split off as a piece of its own and the only event
     // (docs/induction-certificates.md); its steps come next.
     virtual void twin_search() {}
+    // Octagonal scenes where two states step to one: a new induction of the
+    // walk between special states, on the exchange re-rooted at `from`
+    // (rotated coordinates), marking every special state but `from` and the
+    // target's states, or only the state `only`; its steps come next.
+    virtual void walk_search(const Integer& /*from*/, const std::optional<Integer>& /*only*/) {}
 };
 
 // What comes first on the orbit of x.

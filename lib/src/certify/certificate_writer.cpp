@@ -9,7 +9,9 @@
 #include "orthoray/exchange.hpp"
 
 #include <initializer_list>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace orthoray {
 
@@ -42,6 +44,12 @@ public:
                   {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
         write_pieces(exchange);
     }
+    void walk_search(const Integer& from, const std::optional<Integer>& only) override {
+        if (only)
+            statement("walk-search", {from.get_str(), "only", only->get_str()});
+        else
+            statement("walk-search", {from.get_str(), "all"});
+    }
     void twin_search() override {
         writer_.out_ << (writer_.format_ == CertificateFormat::text ? "twin-search\n"
                                                                     : "{\"twin-search\": true}\n");
@@ -73,17 +81,22 @@ private:
                       {std::to_string(*exchange.twin_transversal), exchange.twin_index.get_str()});
         write_pieces(exchange);
     }
+    // A cut state's piece (a dead end of one state in the exchange) says
+    // `cut IMAGE JOIN`: the ray steps to JOIN.
     void write_pieces(const IntervalExchange& exchange) {
+        auto cut = exchange.cuts.begin();
         for (const ExchangePiece& p : exchange.pieces) {
-            const char* kind = p.kind == PieceKind::reflect  ? "reflect"
-                               : p.kind == PieceKind::escape ? "escape"
-                                                             : "absorbed";
-            if (p.hit)
-                statement("piece",
-                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str(), "hit"});
-            else
-                statement("piece",
-                          {p.start.get_str(), p.length.get_str(), kind, p.image.get_str()});
+            while (cut != exchange.cuts.end() && cut->first < p.start) ++cut;
+            const bool is_cut = cut != exchange.cuts.end() && cut->first == p.start;
+            const char* kind = is_cut                         ? "cut"
+                               : p.kind == PieceKind::reflect ? "reflect"
+                               : p.kind == PieceKind::escape  ? "escape"
+                                                              : "absorbed";
+            std::vector<std::string> operands{p.start.get_str(), p.length.get_str(), kind,
+                                              p.image.get_str()};
+            if (is_cut) operands.push_back(cut->second.get_str());
+            if (p.hit) operands.push_back("hit");
+            statement("piece", operands);
         }
     }
     void step(const char* kind, std::size_t a, const std::string& b) {
@@ -92,6 +105,10 @@ private:
     // `keyword operands...`; in JSON a single operand is a scalar unless
     // `array` asks for a list.
     void statement(const char* keyword, std::initializer_list<std::string> operands,
+                   bool array = true) {
+        statement(keyword, std::vector<std::string>(operands), array);
+    }
+    void statement(const char* keyword, const std::vector<std::string>& operands,
                    bool array = true) {
         std::ostream& out = writer_.out_;
         if (writer_.format_ == CertificateFormat::text) {
@@ -194,9 +211,11 @@ void CertificateWriter::finish(const Answer& answer) {
              << "\nreflections " << reflections << '\n';
     if (induced_) {
         // The exchange already says where x is: the verdict is the answer,
-        // plus the period of a cycle.
+        // plus the period of a cycle (reflections minus the tail, which only
+        // a walk's cycle has).
         if (answer.reason == Reason::cycle) {
-            statement("period") << (json ? "\"" + reflections + "\"" : " " + reflections);
+            const std::string period = answer.period().get_str();
+            statement("period") << (json ? "\"" + period + "\"" : " " + period);
             end_statement();
         }
         if (answer.reason == Reason::limit) { // stopped while the steps were written

@@ -24,7 +24,6 @@ std::vector<PieceSpec> parse_pieces(CertificateReader& in) {
     while (in.keyword() == "piece") {
         if (in.size() < 5)
             in.fail(in.size(), in.size() == 4 ? "a non-negative integer" : "a value");
-        if (in.size() > 6) in.fail(6, in.end_of_statement());
         PieceSpec piece;
         piece.start = in.count(1);
         piece.length = in.count(2);
@@ -34,11 +33,21 @@ std::vector<PieceSpec> parse_pieces(CertificateReader& in) {
             piece.kind = Kind::escape;
         else if (in.token(3) == "absorbed")
             piece.kind = Kind::absorbed;
+        else if (in.token(3) == "cut")
+            piece.kind = Kind::cut;
         else
-            in.fail(3, "reflect, escape or absorbed");
+            in.fail(3, "reflect, escape, absorbed or cut");
         piece.image = in.count(4);
-        if (in.size() == 6) {
-            if (in.token(5) != "hit") in.fail(5, std::string("'hit' or ") + in.end_of_statement());
+        std::size_t next = 5; // `cut` has its join here
+        if (piece.kind == Kind::cut) {
+            if (in.size() < 6) in.fail(5, "a non-negative integer");
+            piece.join = in.count(5);
+            next = 6;
+        }
+        if (in.size() > next + 1) in.fail(next + 1, in.end_of_statement());
+        if (in.size() == next + 1) {
+            if (in.token(next) != "hit")
+                in.fail(next, std::string("'hit' or ") + in.end_of_statement());
             piece.hit = true;
         }
         pieces.push_back(std::move(piece));

@@ -16,7 +16,9 @@
 
 namespace orthoray::certify::induction_check {
 
-enum class Kind { reflect, escape, absorbed };
+// `cut` (octagonal walk certificates only): a state of its own that the
+// exchange closes like a dead end, though the ray steps to `join`.
+enum class Kind { reflect, escape, absorbed, cut };
 
 enum class StepKind { top, bottom, equal, invariant, top_cycle, bottom_cycle };
 
@@ -28,6 +30,7 @@ struct TransversalSpec {
 
 struct PieceSpec {
     Integer start, length, image;
+    Integer join; // a cut piece's
     Kind kind = Kind::reflect;
     bool hit = false;
 };

@@ -106,6 +106,8 @@ private:
             case Kind::absorbed:
                 check_absorbed(where, run, meetings);
                 break;
+            case Kind::cut:
+                fail(where, "a cut piece belongs to octagonal walk certificates only");
             }
             // The hit flag: the target is on the line of at most one state.
             if (const std::optional<Integer> j = hit_candidate(run, meetings)) {

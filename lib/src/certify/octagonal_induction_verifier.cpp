@@ -16,6 +16,7 @@
 #include "certify/induction_check_failure.hpp"
 #include "certify/induction_verdict.hpp"
 #include "certify/octagonal_piece_check.hpp"
+#include "certify/octagonal_walk_check.hpp"
 #include "certify/path_geometry.hpp"
 #include "certify/replayed_exchange.hpp"
 
@@ -101,7 +102,28 @@ public:
     }
 
     void step(const StepSpec& s) {
-        checks_.guard([&] { (twin_replay_ ? *twin_replay_ : *replay_).apply(s); });
+        checks_.guard([&] {
+            if (walk_replay_)
+                walk_replay_->apply(s);
+            else
+                (twin_replay_ ? *twin_replay_ : *replay_).apply(s);
+        });
+    }
+
+    // `walk-search FROM all|only Z` (docs/induction-certificates.md, "The
+    // walk"): the certificate is a walk between special states, not one
+    // induction from x.
+    void walk_search(const Integer& from, const std::optional<Integer>& only) {
+        checks_.guard([&] {
+            if (!walk_) {
+                if (replay_->steps_applied() > 0 || twin_replay_)
+                    fail("walk-search", "steps of a single induction came before it");
+                walk_.emplace(parsed_.pieces, exchange_.state_count,
+                              [this](const Integer& r) { return twin_of(r); });
+            }
+            if (walk_replay_) walk_->finished(walk_replay_->first_alone());
+            walk_replay_.emplace(walk_->search(from, only), exchange_.state_count);
+        });
     }
 
     // `twin-search`: the main induction has ended; the second starts.
@@ -127,6 +149,14 @@ public:
                                              " induction steps checked, no answer proven"};
                 return;
             }
+            if (walk_) {
+                verdict = Verdict{true, walk_verdict(stated)};
+                return;
+            }
+            for (const PieceSpec& p : parsed_.pieces)
+                if (p.kind == Kind::cut)
+                    fail("verdict", "cut pieces, but no walk-search: one induction from x "
+                                    "would take a cut state for a dead end");
             ReplayedPiece x = replay_->first_alone();
             if (x.event.kind == FirstEvent::none && twin_rotated_) {
                 // The lifted orbit returned to x after p reflections; the
@@ -146,6 +176,55 @@ public:
     }
 
 private:
+    // The walk's answer against the stated one.
+    std::string walk_verdict(const Parsed& stated) {
+        if (walk_replay_) walk_->finished(walk_replay_->first_alone());
+        walk_replay_.reset();
+        const WalkAnswer& a = walk_->answer();
+        const char* reason = to_string(stated.reason);
+        if (stated.answer != (stated.reason == Reason::hit ? "yes" : "no"))
+            fail("verdict", "answer " + stated.answer + " does not go with reason " + reason);
+        if (stated.reason != a.reason)
+            fail("verdict",
+                 std::string("reason ") + reason + ", but the walk gives " + to_string(a.reason));
+        if (stated.reflections != a.reflections)
+            fail("verdict", "reflections " + str(stated.reflections) + ", but the walk gives " +
+                                str(a.reflections));
+        if (a.reason == Reason::cycle && stated.period != a.reflections - a.tail)
+            fail("verdict", "period " + str(stated.period) + ", but the walk gives " +
+                                str(a.reflections - a.tail) + " after a tail of " + str(a.tail));
+        // The path rule's cross-check knows cycles through point 1 only.
+        if (sgn(a.tail) == 0) resimulate(scene_, stated);
+        return "valid: " + std::string(reason) + ", " + str(a.reflections) + " reflections";
+    }
+
+    // The state of the listing at the same lattice point as rotated state r,
+    // leaving in the same direction, if there is one (on a double cover,
+    // r's other lift).
+    std::optional<Integer> twin_of(const Integer& r) const {
+        const Integer& n = exchange_.state_count;
+        const Integer raw = floor_mod(r + exchange_.first_raw, n);
+        const auto& ts = exchange_.transversals;
+        const auto after =
+            std::upper_bound(ts.begin(), ts.end(), raw,
+                             [](const Integer& v, const LiftedSpec& t) { return v < t.offset; });
+        const LiftedSpec& t = *(after - 1);
+        const Integer i = raw - t.offset;
+        const Integer px = t.x0 + i * t.sx, py = t.y0 + i * t.sy;
+        std::optional<Integer> other;
+        for (const LiftedSpec& u : ts) {
+            if (u.dx * t.dy != u.dy * t.dx || sgn(Integer(u.dx * t.dx + u.dy * t.dy)) <= 0)
+                continue;
+            const std::optional<Integer> j = index_at(u, px, py);
+            if (!j || u.offset + *j == raw) continue;
+            if (other)
+                fail("walk",
+                     "three states are at " + pair_text(px, py) + " leaving in one direction");
+            other = floor_mod(u.offset + *j - exchange_.first_raw, n);
+        }
+        return other;
+    }
+
     Integer lattice(const Rational& x, const std::string& what) const {
         Rational v = x * parsed_.scale;
         v.canonicalize();
@@ -206,7 +285,13 @@ private:
     // The index of the state of t that is (p1, v1), if any.
     std::optional<Integer> index_of_first(const LiftedSpec& t) const {
         if (!along_v1(t.dx, t.dy)) return std::nullopt;
-        const Integer ex = p1x_ - t.x0, ey = p1y_ - t.y0;
+        return index_at(t, p1x_, p1y_);
+    }
+
+    // Which state of t is the lattice point (px, py), if one is.
+    static std::optional<Integer> index_at(const LiftedSpec& t, const Integer& px,
+                                           const Integer& py) {
+        const Integer ex = px - t.x0, ey = py - t.y0;
         if (t.count == 1) {
             if (sgn(ex) == 0 && sgn(ey) == 0) return Integer(0);
             return std::nullopt;
@@ -283,9 +368,10 @@ private:
             }
             const Integer head = t - p.start;
             const Integer tail = p.length - head - 1;
-            if (sgn(head) > 0) cut.push_back({p.start, head, p.image, p.kind, false});
-            cut.push_back({t, 1, p.image + head, p.kind, true});
-            if (sgn(tail) > 0) cut.push_back({t + 1, tail, p.image + head + 1, p.kind, false});
+            if (sgn(head) > 0) cut.push_back({p.start, head, p.image, p.join, p.kind, false});
+            cut.push_back({t, 1, p.image + head, p.join, p.kind, true});
+            if (sgn(tail) > 0)
+                cut.push_back({t + 1, tail, p.image + head + 1, p.join, p.kind, false});
         }
         return cut;
     }
@@ -296,7 +382,8 @@ private:
     OctagonalExchange exchange_;
     Integer p1x_, p1y_;
     std::optional<Integer> twin_rotated_;
-    std::optional<ReplayedExchange> replay_, twin_replay_;
+    std::optional<ReplayedExchange> replay_, twin_replay_, walk_replay_;
+    std::optional<WalkCheck> walk_;
     FirstFailure checks_;
 };
 
@@ -317,6 +404,20 @@ Verdict verify_octagonal_induction(const Scene& scene, CertificateReader& in,
             in.expect("twin-search", 0, in.end_of_statement());
             searched = true;
             check.twin_search();
+        } else if (in.keyword() == "walk-search") {
+            if (in.size() < 3)
+                in.fail(in.size(), in.size() == 1 ? "a non-negative integer" : "all or only");
+            const Integer from = in.count(1);
+            std::optional<Integer> only;
+            if (in.token(2) == "only") {
+                in.expect("walk-search", 3, "a non-negative integer");
+                only = in.count(3);
+            } else if (in.token(2) == "all") {
+                in.expect("walk-search", 2, "all or only");
+            } else {
+                in.fail(2, "all or only");
+            }
+            check.walk_search(from, only);
         } else {
             break;
         }

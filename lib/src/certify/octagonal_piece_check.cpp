@@ -154,6 +154,10 @@ private:
             case Kind::absorbed:
                 check_absorbed(where, run);
                 break;
+            case Kind::cut: // the ray steps to the join, checked as a reflect piece
+                if (piece.length != 1) fail(where, "a cut piece is one state");
+                check_reflect(where, {piece.start, 1, piece.join, piece.join, Kind::reflect}, run);
+                break;
             }
             if (const std::optional<Integer> j = hit_candidate(run)) {
                 hits += 1;

@@ -42,7 +42,7 @@ ReplayedExchange::ReplayedExchange(const std::vector<PieceSpec>& pieces, const I
             piece.event.kind = FirstEvent::hit;
         else if (spec.kind == Kind::escape)
             piece.event.kind = FirstEvent::escape;
-        else if (spec.kind == Kind::absorbed)
+        else if (spec.kind == Kind::absorbed || spec.kind == Kind::cut) // a dead end here
             piece.event.kind = FirstEvent::absorbed;
         pieces_.push_back(std::move(piece));
     }

@@ -147,27 +147,62 @@ Answer finished(Answer& answer, std::chrono::steady_clock::time_point begin) {
     return answer;
 }
 
-// The orbit of x on a layout with collisions (rho_walk.hpp); false when
-// `stop` ended it.
-bool walk_collisions(const OctagonalLayout& layout, Answer& answer,
-                     const std::function<bool(std::uint64_t)>& stop) {
-    RhoMap map{layout.size,  layout.modulus, layout.pieces, layout.collisions,
-               layout.twins, layout.first,   layout.twin,   layout.hits};
-    cut_collisions(map.pieces, map.collisions);
-    const std::optional<RhoOrbit> rho = walk_rho(map, stop);
-    if (!rho) return false;
-    answer.stats.induction.pieces = map.pieces.size();
-    answer.stats.induction.states = map.size;
-    answer.stats.induction.steps = rho->steps;
-    answer.stats.induction.rounds = rho->rounds;
+// The step map of a layout with collisions in E's listed coordinates
+// (rho_walk.hpp): the collisions cut, x = 0, the target's states flagged.
+RhoMap rho_map(const OctagonalLayout& layout) {
+    std::vector<RawPiece> pieces = layout.pieces;
+    cut_collisions(pieces, layout.collisions);
+    RhoMap map;
+    map.listed = finish_exchange_on(layout.size, layout.modulus, {}, std::move(pieces),
+                                    layout.first, layout.hits);
+    auto rotated = [&](const Integer& raw) {
+        return Integer(lattice::floor_mod(Integer(raw - layout.first), layout.size));
+    };
+    for (const Collision& c : layout.collisions)
+        map.cuts.emplace_back(rotated(c.state), rotated(c.join));
+    std::vector<std::pair<Integer, Integer>> twins = layout.twins;
+    if (layout.twin) twins.emplace_back(layout.first, *layout.twin);
+    for (const auto& [state, twin] : twins) { // both ways
+        map.twins.emplace_back(rotated(state), rotated(twin));
+        map.twins.emplace_back(rotated(twin), rotated(state));
+    }
+    for (auto* list : {&map.cuts, &map.twins}) {
+        std::sort(list->begin(), list->end());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    return map;
+}
+
+// The answer the walk gives (rho_walk.hpp).
+void set_walk_outcome(Answer& answer, const RhoMap& map, const RhoOrbit& rho) {
+    answer.stats.induction.pieces = map.listed.pieces.size();
+    answer.stats.induction.states = map.listed.size;
+    answer.stats.induction.steps = rho.steps;
+    answer.stats.induction.rounds = rho.rounds;
     InducedOrbit orbit;
-    orbit.event = rho->event;
-    orbit.offset = rho->offset;
-    orbit.period = rho->period;
+    orbit.event = rho.event;
+    orbit.offset = rho.offset;
+    orbit.period = rho.period;
     set_outcome(answer, orbit);
-    if (rho->event == ExchangeEvent::none) {
-        answer.tail = rho->tail;
-        answer.reflections = rho->tail + rho->period;
+    if (rho.event == ExchangeEvent::none) {
+        answer.tail = rho.tail;
+        answer.reflections = rho.tail + rho.period;
+    }
+}
+
+// The walk's certificate: E as listed, then every search of the proof with
+// its steps (docs/induction-certificates.md, "The walk"); false when `stop`
+// ended it.
+bool stream_walk(const RhoMap& map, const RhoOrbit& rho, const OctagonalLayout& layout,
+                 const Integer& scale, InductionObserver& observer,
+                 const std::function<bool(std::uint64_t)>& stop) {
+    IntervalExchange listed = to_public(map.listed);
+    add_lattice_states(listed, layout, scale);
+    listed.cuts = map.cuts;
+    observer.begin(listed);
+    for (const RhoSearch& search : rho.proof) {
+        observer.walk_search(search.from, search.only);
+        if (!induce(to_public(search_exchange(map, search)), &observer, stop)) return false;
     }
     return true;
 }
@@ -224,12 +259,18 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
     if (stop(0)) return limited(*limit);
     if (!layout->collisions.empty()) {
         // Two states step to one: the walk between special states
-        // (rho_walk.hpp). Its certificate would be a chain of inductions,
-        // which the certificate format does not have: the tracer's path
-        // certifies such answers instead.
-        if (certify) return std::nullopt;
-        if (!walk_collisions(*layout, answer, stop)) return limited(*limit);
+        // (rho_walk.hpp), certified search by search.
+        const RhoMap map = rho_map(*layout);
+        const std::optional<RhoOrbit> rho = walk_rho(map, stop);
+        if (!rho) return limited(*limit);
+        set_walk_outcome(answer, map, *rho);
         if (!capped(answer, options)) return std::nullopt;
+        if (certify) {
+            visit_prefix();
+            if (InductionObserver* observer = options.induction_observer)
+                if (!stream_walk(map, *rho, *layout, s.scale, *observer, stop))
+                    return limited(*limit);
+        }
         return finished(answer, begin);
     }
     IntervalExchange exchange = finish_exchange(layout->size, layout->modulus, {}, layout->pieces,
