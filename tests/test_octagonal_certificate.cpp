@@ -391,3 +391,32 @@ TEST_CASE("malformed octagonal induction statements are one located error",
         CHECK(r.err == bad.substr(0, bad.size() - 8) + c.message + "\n");
     }
 }
+
+TEST_CASE("a walk of 10^18 reflections after a tail is certified and verified",
+          "[octagonal][induction-certificate]") {
+    // The slide box of bench/octagonal_induction_bench.cpp at sides near
+    // 10^18: a mirror of length sqrt(2) on the floor, a ray along (1, 1).
+    // Two states step to one, the cycle comes after a tail of 6.7 x 10^17,
+    // and the certificate is a few searches, in both formats.
+    const Integer n("1000000000000000000");
+    const Integer w = n + 3, h = n - 11, x0 = n / 3 + 1;
+    Scene s;
+    s.add_diagonal(ElementKind::mirror, Rational(x0), 0, Rational(x0 + 1), 1);
+    s.add_mirror(0, 0, {{0, Rational(h)}});
+    s.add_mirror(0, Rational(w), {{0, Rational(h)}});
+    s.add_mirror(1, 0, {{0, Rational(w)}});
+    s.add_mirror(1, Rational(h), {{0, Rational(w)}});
+    shoot(s, Rational(n / 2 + 5), Rational(n / 7 + 2), 1, 1);
+    s.target() = {Rational(2 * w), Rational(2 * h), 0};
+    for (const CertificateFormat format : {CertificateFormat::text, CertificateFormat::jsonl}) {
+        const Certified c = certify(s, Engine::induction, format);
+        INFO(c.text);
+        CHECK(c.answer.engine == EngineUsed::induction);
+        CHECK(c.answer.reason == Reason::cycle);
+        CHECK(c.answer.tail > Integer("100000000000000000"));
+        CHECK(c.text.find("walk-search") != std::string::npos);
+        const Outcome v = test::verify(s, c.text);
+        CHECK(v.valid);
+        CHECK(v.message == expected_message(c.answer));
+    }
+}
