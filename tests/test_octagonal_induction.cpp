@@ -134,7 +134,7 @@ TEST_CASE("induction agrees with the reference tracer on random octagonal trajec
     test::RandomOctagonalShape shape;
     const int cases = test::case_count(7500);
     int scenes = 0, induced = 0, cycles = 0, hits = 0, escapes = 0, absorbed = 0;
-    int walked = 0, tails = 0; // induced with collisions; of which cycles after a tail
+    int walked = 0, tails = 0; // induced without an exchange (of a third); cycles after a tail
     SolveOptions reference;
     reference.engine = Engine::reference;
     reference.max_steps = 200'000;
@@ -164,10 +164,10 @@ TEST_CASE("induction agrees with the reference tracer on random octagonal trajec
             continue;
         }
         ++induced;
-        if (!exchange_of(s)) {
-            ++walked;
-            if (got.reason == Reason::cycle && got.tail > 0) ++tails;
-        }
+        // Only a walk finds a tail (a bijection's orbits are cycles); one
+        // scene in three is asked whether it had an exchange at all.
+        if (got.reason == Reason::cycle && got.tail > 0) ++tails;
+        if (i % 3 == 0 && !exchange_of(s)) ++walked;
         switch (got.reason) {
         case Reason::hit:
             ++hits;
@@ -185,10 +185,10 @@ TEST_CASE("induction agrees with the reference tracer on random octagonal trajec
     // Every scene is decided by induction, those without a bijective
     // exchange (or without a reflection) by the walk, and every outcome is
     // common: 5,000 induced in all, a few dozen cycles after a tail.
-    WARN("induced " << induced << " of " << scenes << ", " << walked << " by the walk, " << tails
-                    << " cycles after a tail");
+    WARN("induced " << induced << " of " << scenes << ", " << walked
+                    << " of a third without an exchange, " << tails << " cycles after a tail");
     CHECK(induced == scenes);
-    CHECK(walked > cases / 10);
+    CHECK(walked > cases / 30);
     CHECK(tails > cases / 400);
     CHECK(induced >= cases * 2 / 3);
     CHECK(hits > cases / 20);
