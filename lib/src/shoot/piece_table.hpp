@@ -154,6 +154,11 @@ public:
             y = ny;
             neg = nneg;
             at = hop.next();
+            // The next hop is in this line or the next (a short slot is at
+            // most 128 bytes of hops): fetched while its positions are
+            // searched, not after.
+            __builtin_prefetch(hops_.data() + at.begin);
+            __builtin_prefetch(hops_.data() + at.begin + 4);
         }
         p[0] = x;
         p[1] = y;
@@ -162,7 +167,7 @@ public:
         return taken;
     }
 
-    std::size_t size() const { return hops_.size(); }
+    std::size_t size() const { return count_; }
 
     // Marks the pieces holding the states after which the ray passes
     // `target`: for each direction d, the segment through the target in
@@ -231,61 +236,63 @@ private:
                 static_cast<Kind>((h.bits >> kind_shift) & 3u), h.slope};
     }
 
-    // Keys past a slot that the fixed-width searches read (and mask off):
-    // up to 15 blocks of 8 beyond its start.
-    static constexpr std::size_t key_padding = 128;
+    // Positions past the last slot that the fixed-width searches read (and
+    // mask off): up to 15 past a long slot's index, 7 past a short slot.
+    static constexpr std::size_t key_padding = 16;
     static constexpr bool fixed_width = std::is_trivially_copyable_v<Int>;
 
-    // How many of key[stride], key[2 stride], ..., key[(width - 1) stride]
-    // are at most u, counting only the first `count - 1` of them: a fixed
-    // number of subtractions, masks and adds with no jumps and no compares,
-    // which the compiler turns into vector code (key[0], a slot's first
-    // position, is at most u). key <= u and i < count are read off the sign
-    // bits of key - (u + 1) and i - count: every position is below 8B in
-    // size (lattice_int.hpp), so the differences cannot overflow.
-    template <unsigned width, unsigned stride>
+    // How many of key[1], ..., key[width - 1] are at most u, counting only
+    // the first `count - 1` of them (key[0], a slot's first position, is at
+    // most u): a fixed number of subtractions, masks and adds, no compares
+    // and no jumps. key <= u and i < count are the sign bits of key - (u + 1)
+    // and i - count; every position is below 8B in size (lattice_int.hpp),
+    // so the differences cannot overflow. (Plain registers: moving u into a
+    // vector register and the count back out costs more latency than the
+    // compares, measured.)
+    template <unsigned width>
     static std::uint32_t count_at_most(const Int* key, std::uint32_t count, const Int& u) {
         using Bits = std::conditional_t<sizeof(Int) == 8, std::uint64_t, lattice::uint128_t>;
         constexpr int sign = 8 * sizeof(Int) - 1;
         const Int above = u + 1, n = count;
         Bits k = 0;
         for (unsigned i = 1; i < width; ++i)
-            k += (static_cast<Bits>(key[i * stride] - above) & static_cast<Bits>(Int(i) - n)) >>
-                 sign;
+            k += (static_cast<Bits>(key[i] - above) & static_cast<Bits>(Int(i) - n)) >> sign;
         return static_cast<std::uint32_t>(k);
     }
 
     // The piece holding position u, counted from the slot's first: the last
     // one starting at or before u. A slot of up to 8 pieces is one cache
     // line of positions, counted at fixed width. A longer one (a box wall
-    // of a random scene has 80-100) is searched on two levels: the first
-    // position of each block of 8 (16 blocks at fixed width; a binary
-    // search past that), then the 8 of the block found. A binary search
+    // of a random scene has 80-100) is searched on two levels: its index,
+    // the first position of each block of 8 stored right after its pieces
+    // (up to 16 blocks at fixed width; a binary search past that), then
+    // the 8 of the block found. A binary search
     // over the pieces would jump on every compare, unpredictably.
     std::uint32_t locate(const Cursor& where, const Int& u) const {
         const Int* key = from_.data() + where.begin;
         const std::uint32_t count = where.count;
         if constexpr (fixed_width) {
-            if (count <= 8) return count_at_most<8, 1>(key, count, u);
+            if (count <= 8) return count_at_most<8>(key, count, u);
             const std::uint32_t blocks = (count + 7) / 8;
             std::uint32_t block = 0;
             if (blocks <= 16) {
-                block = count_at_most<16, 8>(key, blocks, u);
+                block = count_at_most<16>(key + count, blocks, u);
             } else {
                 std::uint32_t lo = 0, hi = blocks; // key[8 lo] <= u < key[8 hi] (hi: past the end)
                 while (hi - lo > 1) {
                     const std::uint32_t mid = (lo + hi) / 2;
-                    (u < key[8 * mid] ? hi : lo) = mid;
+                    (u < key[count + mid] ? hi : lo) = mid;
                 }
                 block = lo;
             }
-            return 8 * block + count_at_most<8, 1>(key + 8 * block, count - 8 * block, u);
+            return 8 * block + count_at_most<8>(key + 8 * block, count - 8 * block, u);
         } else {
             // GMP integers: a compare costs more than a jump; search plainly.
             return static_cast<std::uint32_t>(std::upper_bound(key, key + count, u) - key - 1);
         }
     }
 
+    std::size_t count_ = 0;                  // pieces (the arrays also hold long slots' indexes)
     std::vector<Int> from_;                  // per piece: its first position (+ key_padding)
     std::vector<Hop> hops_;                  // per piece: what a reflection there does
     std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)

@@ -217,8 +217,17 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
                     resolve(Int(b[i]->u + 1), no_event);
             }
             const std::size_t count = table.hops_.size() - range.begin;
-            if (table.hops_.size() > max_pieces || count > UINT16_MAX) return std::nullopt;
+            table.count_ += count;
+            if (table.count_ > max_pieces || count > UINT16_MAX) return std::nullopt;
             range.count = static_cast<std::uint16_t>(count);
+            // A long slot's index: the first position of each block of 8
+            // pieces, stored right after its pieces (PieceTable::locate).
+            if (count > 8)
+                for (std::size_t k = range.begin; k < range.begin + count; k += 8) {
+                    table.from_.push_back(table.from_[k]);
+                    table.hops_.emplace_back();
+                    table.next_mirror_.push_back(0);
+                }
         }
     }
 
