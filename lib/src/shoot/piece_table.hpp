@@ -262,16 +262,18 @@ private:
 
     // The piece holding position u, counted from the slot's first: the last
     // one starting at or before u. A slot of up to 8 pieces is one cache
-    // line of positions, counted at fixed width. A longer one (a box wall
-    // of a random scene has 80-100) is searched on two levels: its index,
-    // the first position of each block of 8 stored right after its pieces
-    // (up to 16 blocks at fixed width; a binary search past that), then
-    // the 8 of the block found. A binary search
+    // line of positions, counted at fixed width (4 lanes when it has at
+    // most 4, as most have: the lanes cost; 2 was slower, measured). A
+    // longer one (a box wall of a random scene has 80-100) is searched on
+    // two levels: its index, the first position of each block of 8 stored
+    // right after its pieces (up to 16 blocks at fixed width; a binary
+    // search past that), then the 8 of the block found. A binary search
     // over the pieces would jump on every compare, unpredictably.
     std::uint32_t locate(const Cursor& where, const Int& u) const {
         const Int* key = from_.data() + where.begin;
         const std::uint32_t count = where.count;
         if constexpr (fixed_width) {
+            if (count <= 4) return count_at_most<4>(key, count, u);
             if (count <= 8) return count_at_most<8>(key, count, u);
             const std::uint32_t blocks = (count + 7) / 8;
             std::uint32_t block = 0;
