@@ -12,8 +12,9 @@
 // (with a flip when A and B are perpendicular). So the map "position on A ->
 // (next mirror, position there)" is piecewise a translation: over all
 // (A, d) it is an interval exchange with flips, and with holes where the ray
-// escapes or is absorbed. A reflection is then one binary search in A's few
-// pieces plus a few additions.
+// escapes or is absorbed. A reflection is then a fixed-width count among A's
+// few pieces plus a few additions (docs/piece-tables.md, "How a reflection
+// reads them").
 //
 // Building. The breakpoints of (A, d) are (1) the positions on A of every
 // event lying on A (its ends, crossings on it) and (2) the positions on A
