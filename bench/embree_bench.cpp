@@ -56,6 +56,7 @@ ChildResult run_embree(const Scene& scene, std::uint64_t steps, bool robust) {
 // Net reflections per second of each run (setup excluded), and the last answer.
 struct Rates {
     std::vector<double> rate;
+    std::vector<double> rss_mb; // each run's process: the scene and the tracer
     ChildResult last;
     bool ok = true;
     void add(const Measured& m) {
@@ -65,6 +66,7 @@ struct Rates {
             return;
         }
         last = m.result;
+        rss_mb.push_back(static_cast<double>(m.max_rss_kb) / 1024);
         const double net = m.result.wall - m.result.setup;
         rate.push_back(net > 0 ? static_cast<double>(m.result.performed) / net : 0);
     }
@@ -136,7 +138,8 @@ int embree_baseline(const Options& o) {
                 power_of_ten(steps).c_str(), o.runs);
     Table speed({"scene", "exact refl/s", "float refl/s", "Embree refl/s", "Embree robust refl/s",
                  "exact / Embree", "exact / Embree robust", "float / Embree",
-                 "Embree setup s (robust)", "outcome exact; float; Embree; robust"});
+                 "Embree setup s (robust)", "exact setup s", "peak RSS MB exact; Embree",
+                 "outcome exact; float; Embree; robust"});
     std::vector<std::int64_t> sizes = {100, 1000, 10'000};
     if (!o.quick) sizes.push_back(100'000);
     int failures = 0;
@@ -161,6 +164,8 @@ int embree_baseline(const Options& o) {
                        rate_text(e), rate_text(f), rate_text(b), rate_text(br), ratio(e, b),
                        ratio(e, br), ratio(f, b),
                        sig3(fast.last.setup) + " (" + sig3(robust.last.setup) + ")",
+                       sig3(exact.last.setup),
+                       fixed(median(exact.rss_mb), 1) + "; " + fixed(median(fast.rss_mb), 1),
                        outcome(exact.last) + "; " + outcome(flt.last) + "; " + outcome(fast.last) +
                            "; " + outcome(robust.last)});
         }

@@ -2,6 +2,7 @@
 // refusal past their budget. Their answers against brute force from every
 // lattice point of every mirror are in test_next_hit_conformance.cpp.
 #include "shoot/piece_table.hpp"
+#include "support/brute_force_shot.hpp"
 #include "support/portable_random.hpp"
 
 #include <catch2/catch.hpp>
@@ -80,4 +81,45 @@ TEST_CASE("piece tables refuse beyond their budget", "[pieces]") {
     const LatticeScene ls = random_lattice(rng, 50, 200);
     const UniformGrid<std::int64_t, 2> grid(ls);
     CHECK_FALSE(PieceTable<std::int64_t>::build(ls, grid, 100));
+}
+
+// A long wall under a row of short mirrors: leaving the wall, the ray meets
+// one mirror or passes between two, so the wall's slot has hundreds of
+// pieces. Both levels of the search on a long slot (the block index at
+// fixed width, and the binary search past 16 blocks) must find the piece
+// brute force agrees with, at every lattice point of the wall.
+TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pieces]",
+                   std::int64_t, int128_t, Integer) {
+    for (const int mirrors : {12, 150}) {
+        LatticeScene ls;
+        ls.dim = 2;
+        auto add = [&](int axis, int c, int lo, int hi) {
+            LatticeElement e;
+            e.axis = axis;
+            e.lo[axis] = e.hi[axis] = c;
+            e.lo[1 - axis] = lo;
+            e.hi[1 - axis] = hi;
+            ls.elements.push_back(e);
+        };
+        const int length = 4 * mirrors;
+        add(1, 0, 0, length); // the wall y = 0
+        for (int k = 1; k < mirrors; ++k) add(0, 4 * k, 1 + k % 3, 2 + k % 3);
+        const UniformGrid<TestType, 2> grid(ls);
+        const auto table = PieceTable<TestType>::build(ls, grid, 1'000'000);
+        REQUIRE(table);
+        std::size_t longest = 0;
+        for (unsigned d = 0; d < 4; ++d) longest = std::max(longest, table->pieces(0, d).size());
+        CHECK(longest > (mirrors > 100 ? 128u : 8u));
+        for (int x = 0; x <= length; ++x)
+            for (unsigned d = 0; d < 4; ++d) {
+                const TestType p[2] = {TestType(x), TestType(0)};
+                const Shot<TestType> want = test::brute_force_shot<TestType, 2>(ls, p, d),
+                                     got = table->shoot(p, d, 0);
+                INFO(mirrors << " mirrors, x = " << x << ", direction " << d);
+                REQUIRE(got.escape == want.escape);
+                if (want.escape) continue;
+                REQUIRE(got.t == want.t);
+                REQUIRE(got.flip == want.flip);
+            }
+    }
 }

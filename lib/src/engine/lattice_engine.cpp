@@ -134,9 +134,19 @@ public:
             pending_.reset();
             if (const Step step = take(shot, stop); step != Step::next) return ended(step);
         }
-        while (true)
+        while (true) {
+            // The tables' fast path takes the plain reflections; a step it
+            // leaves (escape, absorber, target near, back at state 1) is
+            // taken here. It keeps no path and knows only the first-state
+            // detector, and it leaves mirror_ behind (a placed cursor no
+            // longer reads it).
+            if constexpr (requires { shoot.glide(s_, stop, first_); } &&
+                          std::is_same_v<Detector, FirstStateDetector<State<Int, M>>>)
+                if (reflections_ >= 1 && !options_.path)
+                    reflections_ += shoot.glide(s_, stop - reflections_, first_);
             if (const Step step = take(shoot(s_, mirror_), stop); step != Step::next)
                 return ended(step);
+        }
     }
 
     // advance() in chunks, polling the monitor between them (without one, a
@@ -349,6 +359,12 @@ struct TableWalk {
             placed = true;
         }
         return table->shoot(s.p, where);
+    }
+    // Plain reflections on the tables in one tight loop (PieceTable::glide),
+    // once the cursor is placed; the number taken.
+    std::uint64_t glide(State<Int, 2>& s, std::uint64_t limit, const State<Int, 2>& first) {
+        if (!placed) return 0;
+        return table->glide(s.p, s.negative, where, limit, first.p, first.negative);
     }
     TableWalk fresh() const { return {table, grid}; }
 };

@@ -12,8 +12,9 @@
 // (with a flip when A and B are perpendicular). So the map "position on A ->
 // (next mirror, position there)" is piecewise a translation: over all
 // (A, d) it is an interval exchange with flips, and with holes where the ray
-// escapes or is absorbed. A reflection is then one binary search in A's few
-// pieces plus a few additions.
+// escapes or is absorbed. A reflection is then a fixed-width count among A's
+// few pieces plus a few additions (docs/piece-tables.md, "How a reflection
+// reads them").
 //
 // Building. The breakpoints of (A, d) are (1) the positions on A of every
 // event lying on A (its ends, crossings on it) and (2) the positions on A
@@ -38,7 +39,7 @@
 
 #include <algorithm>
 #include <optional>
-#include <span>
+#include <type_traits>
 #include <vector>
 
 namespace orthoray::shoot {
@@ -56,39 +57,42 @@ public:
         std::uint8_t tangent = 0;
     };
 
-    // 24 bytes with 64-bit integers: every reflection loads one, and at 10^5
-    // mirrors the tables are far larger than the cache, so size is speed.
+    // A piece as the exchange builder and the dump read it: from position
+    // `from` on, the next hit is at t = t0 + slope * (u - from).
     struct Piece {
-        Int from; // first position on the mirror this piece covers
-        Int t0;   // the next hit's parameter at u = from
-        // After reflecting here: the next mirror's pieces for the new
-        // direction, stored inline so that a step needs no other lookup.
-        std::uint32_t next_begin = 0;
-        std::uint16_t next_count = 0;
-        std::uint8_t next_tangent : 1 = 0;
-        std::uint8_t near_target : 1 = 0; // a state here starts a segment through the target
-        std::uint8_t flip : 2 = 0;        // normal axes of the mirrors met there
-        std::uint8_t kind_code : 2 = 0;   // a Kind
-        std::uint8_t slope_code : 2 = 1;  // slope + 1: t(u) = t0 + slope * (u - from)
+        Int from, t0;
+        unsigned flip = 0; // normal axes of the mirrors met there
+        Kind kind_ = Kind::escape;
+        int slope_ = 0;
+        Kind kind() const { return kind_; }
+        int slope() const { return slope_; }
+    };
 
-        Kind kind() const { return static_cast<Kind>(kind_code); }
-        int slope() const { return static_cast<int>(slope_code) - 1; }
-        Cursor next() const { return {next_begin, next_count, next_tangent}; }
+    // The pieces of one (mirror, direction), read one at a time.
+    class Range {
+    public:
+        Range(const PieceTable& table, Cursor c) : table_(&table), c_(c) {}
+        std::size_t size() const { return c_.count; }
+        Piece operator[](std::size_t i) const { return table_->piece(c_.begin + i); }
+
+    private:
+        const PieceTable* table_;
+        Cursor c_;
     };
 
     // std::nullopt when the tables would need more than max_pieces pieces
     // (many crossings can make them quadratic in the number of mirrors).
     // `poll` is called once an element, an event and a slot, and on GMP
     // integers once a piece (it may throw lattice::SetupStopped).
+    // Defined in piece_table_build.hpp.
     static std::optional<PieceTable> build(const LatticeScene& scene,
                                            const UniformGrid<Int, 2>& grid, std::size_t max_pieces,
                                            const lattice::SetupPoll& poll = {});
 
     // The pieces of mirror `element` for leaving it in direction `negative`
     // (bit i set: moving towards -infinity on axis i), sorted by `from`.
-    std::span<const Piece> pieces(std::uint32_t element, unsigned negative) const {
-        const Cursor& c = slots_[element * 4 + negative];
-        return {pieces_.data() + c.begin, c.count};
+    Range pieces(std::uint32_t element, unsigned negative) const {
+        return {*this, slots_[element * 4 + negative]};
     }
 
     // The pieces for leaving mirror `element` in direction `negative`.
@@ -101,14 +105,15 @@ public:
     // (for the direction after reflecting there).
     Shot<Int> shoot(const Int (&p)[2], Cursor& where) const {
         const Int& u = p[where.tangent];
-        const Piece& piece = *locate(where, u);
+        const Hop& hop = hops_[where.begin + locate(where, u)];
+        const auto kind = static_cast<Kind>((hop.bits >> kind_shift) & 3u);
         Shot<Int> shot;
-        shot.escape = piece.kind() == Kind::escape;
-        shot.absorber = piece.kind() == Kind::absorb;
-        shot.flip = piece.flip;
-        shot.near_target = piece.near_target;
-        shot.t = piece.t0 + Int(piece.slope()) * Int(u - piece.from);
-        where = piece.next();
+        shot.escape = kind == Kind::escape;
+        shot.absorber = kind == Kind::absorb;
+        shot.flip = hop.bits & flip_mask;
+        shot.near_target = (hop.bits & near_bit) != 0;
+        shot.t = hop.base + Int(hop.slope) * u;
+        where = hop.next();
         return shot;
     }
 
@@ -116,14 +121,54 @@ public:
     // tests and the dump; the engine keeps a cursor instead).
     Shot<Int> shoot(const Int (&p)[2], unsigned negative, std::uint32_t element) const {
         Cursor where = at(element, negative);
-        const std::size_t k =
-            static_cast<std::size_t>(locate(where, p[where.tangent]) - pieces_.data());
+        const std::size_t k = where.begin + locate(where, p[where.tangent]);
         Shot<Int> shot = shoot(p, where);
         shot.mirror = next_mirror_[k];
         return shot;
     }
 
-    std::size_t size() const { return pieces_.size(); }
+    // The stepper's fast path: reflects the state (p, negative), on the
+    // mirror `where` describes, for as long as the pieces met reflect and no
+    // target is near (Shot::near_target), at most `limit` times, and stops
+    // before a reflection that would lead back to the state (first,
+    // first_negative), which the cycle detector must see. Returns the
+    // reflections taken; p, negative and where have moved on with them. The
+    // state lives in locals (registers) and a piece is used as stored, with
+    // no fields to decode, so a reflection is one search, a multiply-add
+    // and two conditional negations.
+    std::uint64_t glide(Int (&p)[2], unsigned& negative, Cursor& where, std::uint64_t limit,
+                        const Int (&first)[2], unsigned first_negative) const {
+        Int x = p[0], y = p[1];
+        unsigned neg = negative;
+        Cursor at = where;
+        std::uint64_t taken = 0;
+        for (; taken < limit; ++taken) {
+            const Int& u = at.tangent ? y : x;
+            const Hop& hop = hops_[at.begin + locate(at, u)];
+            if (hop.bits & stop_bit) break;
+            const Int t = hop.base + Int(hop.slope) * u;
+            const Int nx = (neg & 1u) ? Int(x - t) : Int(x + t);
+            const Int ny = (neg & 2u) ? Int(y - t) : Int(y + t);
+            const unsigned nneg = neg ^ (hop.bits & flip_mask);
+            if (nx == first[0] && ny == first[1] && nneg == first_negative) break;
+            x = nx;
+            y = ny;
+            neg = nneg;
+            at = hop.next();
+            // The next hop is in this line or the next (a short slot is at
+            // most 128 bytes of hops): fetched while its positions are
+            // searched, not after.
+            __builtin_prefetch(hops_.data() + at.begin);
+            __builtin_prefetch(hops_.data() + at.begin + 4);
+        }
+        p[0] = x;
+        p[1] = y;
+        negative = neg;
+        where = at;
+        return taken;
+    }
+
+    std::size_t size() const { return count_; }
 
     // Marks the pieces holding the states after which the ray passes
     // `target`: for each direction d, the segment through the target in
@@ -150,33 +195,109 @@ public:
     template <class Visit>
     void for_each_row(Visit&& visit) const {
         for (std::uint32_t m = 0; m < tangent_.size(); ++m)
-            for (unsigned d = 0; d < 4; ++d)
-                for (const Piece& p : pieces(m, d))
-                    visit(Row{m, d, to_integer(p.from), to_integer(p.t0), p.kind(),
-                              next_mirror_[static_cast<std::size_t>(&p - pieces_.data())],
+            for (unsigned d = 0; d < 4; ++d) {
+                const Cursor c = at(m, d);
+                for (std::uint32_t k = c.begin; k < c.begin + c.count; ++k) {
+                    const Piece p = piece(k);
+                    visit(Row{m, d, to_integer(p.from), to_integer(p.t0), p.kind(), next_mirror_[k],
                               p.slope(), p.flip});
+                }
+            }
     }
 
 private:
-    // The piece holding position u: the last one of the range
-    // starting at or before u. A mirror has a handful of pieces, so counting
-    // them without branches beats a binary search, whose jumps the processor
-    // cannot predict.
-    const Piece* locate(const Cursor& where, const Int& u) const {
-        const Piece* range = pieces_.data() + where.begin;
-        std::uint32_t k = 0;
-        if (where.count <= 8) {
-            for (std::uint32_t i = 1; i < where.count; ++i) k += !(u < range[i].from);
-        } else {
-            k = static_cast<std::uint32_t>(
-                std::upper_bound(range, range + where.count, u,
-                                 [](const Int& x, const Piece& piece) { return x < piece.from; }) -
-                range - 1);
+    // What a reflection reads of a piece, ready to use: 16 bytes on int64.
+    // The hit is at t = base + slope * u (base = t0 - slope * from: |base|
+    // <= 3B, so t stays within lattice_int.hpp's 8B), and the next mirror's
+    // pieces are inline, so a step needs no other lookup.
+    struct Hop {
+        Int base;
+        std::uint32_t next_begin = 0;
+        std::uint16_t next_count = 0;
+        std::int8_t slope = 0; // -1, 0 or 1
+        std::uint8_t bits = 0; // flip_mask | next_tangent_bit | stop_bit | near_bit | kind
+        Cursor next() const {
+            return {next_begin, next_count,
+                    static_cast<std::uint8_t>((bits & next_tangent_bit) ? 1 : 0)};
         }
-        return range + k;
+    };
+    static constexpr std::uint8_t
+        flip_mask = 3,
+        next_tangent_bit = 4,
+        stop_bit = 8,  // not a plain reflection: escape, absorb or near the target
+        near_bit = 16; // a state here starts a segment through the target
+    static constexpr unsigned kind_shift = 5; // bits 5-6: a Kind
+    static_assert(!std::is_same_v<Int, std::int64_t> || sizeof(Hop) == 16,
+                  "a piece is meant to be 16 bytes of hop and 8 of position on int64");
+
+    Piece piece(std::size_t k) const {
+        const Hop& h = hops_[k];
+        return {from_[k], Int(h.base + Int(h.slope) * from_[k]),
+                static_cast<unsigned>(h.bits & flip_mask),
+                static_cast<Kind>((h.bits >> kind_shift) & 3u), h.slope};
     }
 
-    std::vector<Piece> pieces_;
+    // Positions past the last slot that the fixed-width searches read (and
+    // mask off): up to 15 past a long slot's index, 7 past a short slot.
+    static constexpr std::size_t key_padding = 16;
+    static constexpr bool fixed_width = std::is_trivially_copyable_v<Int>;
+
+    // How many of key[1], ..., key[width - 1] are at most u, counting only
+    // the first `count - 1` of them (key[0], a slot's first position, is at
+    // most u): a fixed number of subtractions, masks and adds, no compares
+    // and no jumps. key <= u and i < count are the sign bits of key - (u + 1)
+    // and i - count; every position is below 8B in size (lattice_int.hpp),
+    // so the differences cannot overflow. (Plain registers: moving u into a
+    // vector register and the count back out costs more latency than the
+    // compares, measured.)
+    template <unsigned width>
+    static std::uint32_t count_at_most(const Int* key, std::uint32_t count, const Int& u) {
+        using Bits = std::conditional_t<sizeof(Int) == 8, std::uint64_t, lattice::uint128_t>;
+        constexpr int sign = 8 * sizeof(Int) - 1;
+        const Int above = u + 1, n = count;
+        Bits k = 0;
+        for (unsigned i = 1; i < width; ++i)
+            k += (static_cast<Bits>(key[i] - above) & static_cast<Bits>(Int(i) - n)) >> sign;
+        return static_cast<std::uint32_t>(k);
+    }
+
+    // The piece holding position u, counted from the slot's first: the last
+    // one starting at or before u. A slot of up to 8 pieces is one cache
+    // line of positions, counted at fixed width (4 lanes when it has at
+    // most 4, as most have: the lanes cost; 2 was slower, measured). A
+    // longer one (a box wall of a random scene has 80-100) is searched on
+    // two levels: its index, the first position of each block of 8 stored
+    // right after its pieces (up to 16 blocks at fixed width; a binary
+    // search past that), then the 8 of the block found. A binary search
+    // over the pieces would jump on every compare, unpredictably.
+    std::uint32_t locate(const Cursor& where, const Int& u) const {
+        const Int* key = from_.data() + where.begin;
+        const std::uint32_t count = where.count;
+        if constexpr (fixed_width) {
+            if (count <= 4) return count_at_most<4>(key, count, u);
+            if (count <= 8) return count_at_most<8>(key, count, u);
+            const std::uint32_t blocks = (count + 7) / 8;
+            std::uint32_t block = 0;
+            if (blocks <= 16) {
+                block = count_at_most<16>(key + count, blocks, u);
+            } else {
+                std::uint32_t lo = 0, hi = blocks; // key[8 lo] <= u < key[8 hi] (hi: past the end)
+                while (hi - lo > 1) {
+                    const std::uint32_t mid = (lo + hi) / 2;
+                    (u < key[count + mid] ? hi : lo) = mid;
+                }
+                block = lo;
+            }
+            return 8 * block + count_at_most<8>(key + 8 * block, count - 8 * block, u);
+        } else {
+            // GMP integers: a compare costs more than a jump; search plainly.
+            return static_cast<std::uint32_t>(std::upper_bound(key, key + count, u) - key - 1);
+        }
+    }
+
+    std::size_t count_ = 0;                  // pieces (the arrays also hold long slots' indexes)
+    std::vector<Int> from_;                  // per piece: its first position (+ key_padding)
+    std::vector<Hop> hops_;                  // per piece: what a reflection there does
     std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)
     std::vector<Cursor> slots_;              // (element * 4 + direction) -> its pieces
     std::vector<std::uint8_t> tangent_;      // the axis a position on the element runs along
@@ -191,272 +312,6 @@ private:
                           Visit&& visit);
 };
 
-template <class Int>
-std::optional<PieceTable<Int>>
-PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& grid,
-                       std::size_t max_pieces, const lattice::SetupPoll& poll) {
-    const auto& elements = scene.elements;
-    const std::uint32_t n = static_cast<std::uint32_t>(elements.size());
-    struct Box {
-        Int lo[2], hi[2];
-        int axis;
-        bool absorber;
-        unsigned acting; // LatticeElement::acting
-    };
-    std::vector<Box> box(n);
-    for (std::uint32_t e = 0; e < n; ++e) {
-        poll();
-        for (int j = 0; j < 2; ++j) {
-            box[e].lo[j] = from_integer<Int>(elements[e].lo[j]);
-            box[e].hi[j] = from_integer<Int>(elements[e].hi[j]);
-        }
-        box[e].axis = elements[e].axis;
-        box[e].absorber = elements[e].absorber;
-        box[e].acting = elements[e].acting;
-    }
-
-    // Events: every element's two ends, and every crossing of a vertical and
-    // a horizontal element (T-junctions and corners included).
-    using Point = std::array<Int, 2>;
-    std::vector<Point> events;
-    for (const Box& b : box) {
-        const int t = 1 - b.axis;
-        Point p{b.lo[0], b.lo[1]};
-        events.push_back(p);
-        p[t] = b.hi[t];
-        events.push_back(p);
-    }
-    for (std::uint32_t e = 0; e < n; ++e) {
-        poll();
-        if (box[e].axis != 0) continue;
-        grid.for_each_neighbour(e, [&](std::uint32_t f) {
-            const Box &v = box[e], &h = box[f];
-            if (h.axis != 1) return;
-            if (h.lo[0] <= v.lo[0] && v.lo[0] <= h.hi[0] && v.lo[1] <= h.lo[1] &&
-                h.lo[1] <= v.hi[1])
-                events.push_back(Point{v.lo[0], h.lo[1]});
-        });
-    }
-    // Events in Z-order of their grid cells: consecutive reverse shots then
-    // walk nearby cells, which matters once the grid outgrows the cache.
-    {
-        std::vector<std::pair<std::uint64_t, Point>> keyed;
-        keyed.reserve(events.size());
-        for (const Point& p : events) {
-            poll();
-            const Int q[2] = {p[0], p[1]};
-            keyed.emplace_back(grid.locality_key(q), p);
-        }
-        std::sort(keyed.begin(), keyed.end());
-        keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
-        events.clear();
-        for (auto& [key, p] : keyed) events.push_back(p);
-    }
-
-    PieceTable table;
-    table.tangent_.resize(n);
-    table.acting_.resize(n);
-    for (std::uint32_t e = 0; e < n; ++e) {
-        table.tangent_[e] = static_cast<std::uint8_t>(1 - box[e].axis);
-        table.acting_[e] = static_cast<std::uint8_t>(box[e].acting);
-    }
-
-    // Breakpoints as (mirror * 4 + direction, position) pairs in one array,
-    // sorted once: far cheaper than a small vector per mirror and direction.
-    // A breakpoint found by shooting back from an event remembers it: the
-    // forward shot from there ends at that event, with nothing in between, so
-    // it needs no second walk through the grid.
-    static constexpr std::uint32_t no_event = ~std::uint32_t{0};
-    struct Break {
-        std::uint32_t slot;
-        std::uint32_t event; // the event the ray from here meets first, or no_event
-        Int u;
-        bool operator<(const Break& o) const { return slot != o.slot ? slot < o.slot : u < o.u; }
-        bool operator==(const Break& o) const { return slot == o.slot && u == o.u; }
-    };
-    std::vector<Break> breaks;
-    breaks.reserve(std::size_t{n} * 8 + events.size() * 12);
-    auto add_breaks_at = [&](const Int(&p)[2], unsigned first_d, unsigned last_d,
-                             std::uint32_t event) {
-        grid.for_each_element_at(p, [&](std::uint32_t m) {
-            if (box[m].absorber) return;
-            for (unsigned d = first_d; d <= last_d; ++d)
-                breaks.push_back(Break{m * 4 + d, event, p[table.tangent_[m]]});
-        });
-    };
-    for (std::uint32_t m = 0; m < n; ++m) {
-        poll();
-        for (unsigned d = 0; d < 4; ++d) {
-            const int t = table.tangent_[m];
-            breaks.push_back(Break{m * 4 + d, no_event, box[m].lo[t]});
-            breaks.push_back(Break{m * 4 + d, no_event, box[m].hi[t]});
-        }
-    }
-    // Whether some element at p acts on direction d (always, without
-    // one-sided elements).
-    auto acted_on_at = [&](const Int(&p)[2], unsigned d) {
-        if (!scene.one_sided) return true;
-        bool acted = false;
-        grid.for_each_element_at(p, [&](std::uint32_t f) {
-            if ((box[f].acting >> d) & 1u) acted = true;
-        });
-        return acted;
-    };
-    for (std::uint32_t e = 0; e < events.size(); ++e) {
-        poll();
-        const Int p[2] = {events[e][0], events[e][1]};
-        add_breaks_at(p, 0, 3, no_event);
-        for (unsigned d = 0; d < 4; ++d) {
-            if (!acted_on_at(p, d)) continue; // rays in direction d pass it unseen
-            walk_back(grid, p, d, [&](const Int(&q)[2]) {
-                add_breaks_at(q, d, d, e);
-                return acted_on_at(q, d);
-            });
-        }
-        if (2 * breaks.size() > max_pieces) return std::nullopt;
-    }
-    // Bucket by slot (a counting sort over the 4n slots), then sort each
-    // slot's few positions: cheaper than one comparison sort of everything.
-    std::vector<std::uint32_t> start(std::size_t{n} * 4 + 1, 0);
-    {
-        for (const Break& k : breaks) ++start[k.slot + 1];
-        for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-        std::vector<Break> bucketed(breaks.size());
-        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-        for (Break& k : breaks) bucketed[fill[k.slot]++] = std::move(k);
-        for (std::size_t i = 0; i + 1 < start.size(); ++i)
-            std::sort(bucketed.begin() + start[i], bucketed.begin() + start[i + 1]);
-        breaks = std::move(bucketed);
-    }
-
-    // Mirrors are resolved, and their pieces laid out, in Z-order of their
-    // low corners: the forward shots then walk nearby cells, and the ray,
-    // whose next mirror is a spatial neighbour, finds its next pieces nearby.
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> order(n);
-    for (std::uint32_t m = 0; m < n; ++m) order[m] = {grid.locality_key(box[m].lo), m};
-    std::sort(order.begin(), order.end());
-
-    // Resolve each piece with one forward shot, merging runs with one map.
-    table.slots_.resize(std::size_t{n} * 4);
-    std::vector<const Break*> b; // the current slot's breakpoints, reused
-    for (const auto& ordered : order) {
-        // A plain variable: clang 14 (the fuzz build) cannot capture a
-        // structured binding in the lambdas below.
-        const auto m = ordered.second;
-        for (unsigned d = 0; d < 4; ++d) {
-            poll();
-            const std::uint32_t slot = m * 4 + d;
-            Cursor& range = table.slots_[slot];
-            range.begin = static_cast<std::uint32_t>(table.pieces_.size());
-            range.tangent = table.tangent_[m];
-            b.clear();
-            for (std::uint32_t k = start[slot]; k < start[slot + 1]; ++k)
-                if (b.empty() || !(*b.back() == breaks[k])) b.push_back(&breaks[k]);
-            if (box[m].absorber) continue;
-            const int tangent = table.tangent_[m];
-            const std::size_t first = table.pieces_.size();
-            auto resolve = [&](const Int& u, std::uint32_t event) {
-                poll.on_gmp<Int>(); // a slot may have thousands of pieces
-                Shot<Int> s;
-                if (event == no_event) {
-                    Int p[2] = {box[m].lo[0], box[m].lo[1]};
-                    p[tangent] = u;
-                    s = grid.shoot(p, d);
-                } else {
-                    const Int p[2] = {events[event][0], events[event][1]};
-                    const int normal = box[m].axis;
-                    const Int t = p[normal] < box[m].lo[normal]
-                                      ? Int(box[m].lo[normal] - p[normal])
-                                      : Int(p[normal] - box[m].lo[normal]);
-                    grid.for_each_element_at(p, [&](std::uint32_t f) {
-                        if ((box[f].acting >> d) & 1u) s.record(t, box[f].axis, box[f].absorber, f);
-                    });
-                }
-                Piece piece;
-                piece.from = u;
-                piece.t0 = s.t;
-                piece.flip = s.flip & 3u;
-                piece.kind_code = static_cast<std::uint8_t>(s.escape     ? Kind::escape
-                                                            : s.absorber ? Kind::absorb
-                                                                         : Kind::reflect);
-                // Moving u along A moves the hit along B; t changes only when
-                // B is perpendicular to A (B's normal is A's tangent axis).
-                if (!s.escape && s.met == (1u << tangent)) {
-                    const bool neg = (d >> tangent) & 1u;
-                    piece.slope_code = neg ? 2 : 0;
-                }
-                if (table.pieces_.size() > first) {
-                    const Piece& last = table.pieces_.back();
-                    const bool same_map =
-                        last.kind_code == piece.kind_code && last.flip == piece.flip &&
-                        table.next_mirror_.back() == s.mirror &&
-                        last.slope_code == piece.slope_code &&
-                        (piece.kind() == Kind::escape ||
-                         last.t0 + Int(last.slope()) * Int(u - last.from) == piece.t0);
-                    if (same_map) return;
-                }
-                table.pieces_.push_back(piece);
-                table.next_mirror_.push_back(s.mirror);
-            };
-            for (std::size_t i = 0; i < b.size(); ++i) {
-                resolve(b[i]->u, b[i]->event);
-                if (i + 1 < b.size() && Int(b[i]->u + 1) < b[i + 1]->u)
-                    resolve(Int(b[i]->u + 1), no_event);
-            }
-            const std::size_t count = table.pieces_.size() - range.begin;
-            if (table.pieces_.size() > max_pieces || count > UINT16_MAX) return std::nullopt;
-            range.count = static_cast<std::uint16_t>(count);
-        }
-    }
-
-    // Link each reflecting piece to the pieces the ray continues from.
-    for (std::uint32_t m = 0; m < n; ++m)
-        for (unsigned d = 0; d < 4; ++d)
-            for (std::uint32_t k = table.slots_[m * 4 + d].begin,
-                               end = k + table.slots_[m * 4 + d].count;
-                 k < end; ++k) {
-                Piece& piece = table.pieces_[k];
-                if (piece.kind() == Kind::reflect) {
-                    const Cursor next = table.at(table.next_mirror_[k], d ^ piece.flip);
-                    piece.next_begin = next.begin;
-                    piece.next_count = next.count;
-                    piece.next_tangent = next.tangent & 1u;
-                }
-            }
-    return table;
-}
-
-template <class Int>
-template <class Visit>
-void PieceTable<Int>::walk_back(const UniformGrid<Int, 2>& grid, const Int (&p)[2], unsigned d,
-                                Visit&& visit) {
-    Int q[2] = {p[0], p[1]};
-    while (true) {
-        const Shot<Int> back = grid.shoot_any(q, d ^ 3u);
-        if (back.escape) return;
-        q[0] = (d & 1u) ? Int(q[0] + back.t) : Int(q[0] - back.t);
-        q[1] = (d & 2u) ? Int(q[1] + back.t) : Int(q[1] - back.t);
-        if (visit(q)) return;
-    }
-}
-
-template <class Int>
-void PieceTable<Int>::mark_target(const UniformGrid<Int, 2>& grid, const Int (&target)[2],
-                                  const lattice::SetupPoll& poll) {
-    for (unsigned d = 0; d < 4; ++d)
-        walk_back(grid, target, d, [&](const Int(&q)[2]) {
-            poll();
-            bool acted = false;
-            grid.for_each_element_at(q, [&](std::uint32_t m) {
-                if ((acting_[m] >> d) & 1u) acted = true;
-                const Cursor where = at(m, d);
-                if (where.count == 0) return; // an absorber: no ray leaves it
-                pieces_[locate(where, q[where.tangent]) - pieces_.data()].near_target = true;
-            });
-            return acted;
-        });
-}
-
-static_assert(sizeof(PieceTable<std::int64_t>::Piece) == 24, "a piece is meant to be 24 bytes");
-
 } // namespace orthoray::shoot
+
+#include "shoot/piece_table_build.hpp"
