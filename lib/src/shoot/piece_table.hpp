@@ -211,7 +211,7 @@ private:
     // <= 3B, so t stays within lattice_int.hpp's 8B), and the next mirror's
     // pieces are inline, so a step needs no other lookup.
     struct Hop {
-        Int base;
+        Int base{};
         std::uint32_t next_begin = 0;
         std::uint16_t next_count = 0;
         std::int8_t slope = 0; // -1, 0 or 1
