@@ -29,22 +29,22 @@
 // depth D* is known, members with key > D* cannot be met at or before it.
 //
 // Keys are stored in 32 bits, as the quantum q = floor((key - base) / 2^s)
-// (base: the least key of the bundle; s: just enough that the depth range
-// fits). Only these two filters read them, and a quantum bounds the key on
-// both sides, base + q 2^s <= key <= base + (q + 1) 2^s - 1, so a member
-// is skipped as behind when even its upper bound is, and the scan stops
-// when even the lower bound passes D*: every decision stays exact, the
-// filters only let through a few more members (s is 0 when the depths fit
-// in 32 bits; 8 on the benchmark's 3D boxes, whose depths reach 10^12).
-// With the plane kept inline, an entry is 16 bytes for int64.
+// (base: the least depth of the bundle's elements, so no key is below it;
+// s: just enough that the depth range fits). Only these two filters read them, and a quantum bounds
+// the key on both sides, base + q 2^s <= key <= base + (q + 1) 2^s - 1, so a member is skipped as
+// behind when even its upper bound is, and the scan stops when even the lower bound passes D*:
+// every decision stays exact, the filters only let through a few more members (s is 0 when the
+// depths fit in 32 bits; 8 on the benchmark's 3D boxes, whose depths reach 10^12). With the plane
+// kept inline, an entry is 16 bytes for int64.
 //
-// Long member lists (hundreds at 10^5 mirrors) are not counted through from
-// their start: each cell row also lists, for every slab of depth
-// [base + i 2^w, base + (i + 1) 2^w), the first member not behind the
-// slab's start. A query starts at its depth's slab and steps past the few
-// members behind it, one compare each, stopping at the first one that is
-// not. All arithmetic is exact integer arithmetic on values bounded as in
-// lattice_int.hpp (|a_j| <= 2B, offsets into the grid <= 4B, keys <= 3B).
+// Long member lists (some 70 a cell at 10^5 mirrors) are not counted
+// through from their start: each cell row also lists, for every slab of
+// depth [base + i 2^w, base + (i + 1) 2^w), the first member not behind the
+// slab's least depth. A query starts at its depth's slab; the members behind
+// it all come before the next slab's start, so it counts them over its own
+// slab only, without branches. All arithmetic is exact integer arithmetic
+// on values bounded as in lattice_int.hpp (|a_j| <= 2B, offsets into the
+// grid <= 4B, keys <= 3B).
 //
 // Each direction has its own bundle, so one-sided elements cost nothing at
 // query time: a bundle registers only the elements that act on its
