@@ -160,6 +160,7 @@ int embree_baseline(const Options& o) {
     Table speed({"scene", "exact refl/s", "float refl/s", "Embree refl/s", "Embree robust refl/s",
                  "exact / Embree", "exact / Embree robust", "float / Embree",
                  "Embree setup s (robust)", "outcome exact; float; Embree; robust"});
+    const std::uint64_t memory_steps = 1000; // reflections of the memory runs
     Table memory({"scene", "scene MB", "exact MB", "Embree MB", "Embree robust MB",
                   "exact / Embree", "exact - scene MB", "Embree - scene MB"});
     std::vector<std::int64_t> sizes = {100, 1000, 10'000};
@@ -188,14 +189,13 @@ int embree_baseline(const Options& o) {
                        sig3(fast.last.setup) + " (" + sig3(robust.last.setup) + ")",
                        outcome(exact.last) + "; " + outcome(flt.last) + "; " + outcome(fast.last) +
                            "; " + outcome(robust.last)});
-            const std::uint64_t few = 1000;
             const long scene_kb = tracing_peak_kb(make, [](const Scene&) {});
-            const long exact_kb =
-                tracing_peak_kb(make, [&](const Scene& s) { run_exact(s, few, Engine::lattice); });
+            const long exact_kb = tracing_peak_kb(
+                make, [&](const Scene& s) { run_exact(s, memory_steps, Engine::lattice); });
             const long fast_kb =
-                tracing_peak_kb(make, [&](const Scene& s) { run_embree(s, few, false); });
+                tracing_peak_kb(make, [&](const Scene& s) { run_embree(s, memory_steps, false); });
             const long robust_kb =
-                tracing_peak_kb(make, [&](const Scene& s) { run_embree(s, few, true); });
+                tracing_peak_kb(make, [&](const Scene& s) { run_embree(s, memory_steps, true); });
             memory.add({"random " + std::to_string(dim) +
                             "D n=" + power_of_ten(static_cast<std::uint64_t>(n)),
                         mb(scene_kb), mb(exact_kb), mb(fast_kb), mb(robust_kb),
@@ -208,7 +208,7 @@ int embree_baseline(const Options& o) {
     std::printf("Peak resident memory of a process from the moment its scene (GMP rationals) "
                 "is built: \"scene\" builds it only; the others then trace %s reflections "
                 "(memory does not grow with them).\n\n",
-                "10^3");
+                power_of_ten(memory_steps).c_str());
     memory.print();
 
     // Divergence: the exact path (the lattice engine's reflection points,
