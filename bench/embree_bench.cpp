@@ -11,6 +11,7 @@
 
 #ifdef ORTHORAY_BENCH_EMBREE
 #include "bench_util.hpp"
+#include "child_process.hpp"
 #include "embree_tracer.hpp"
 #include "measurement.hpp"
 #include "scenes.hpp"
@@ -22,6 +23,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 #endif
@@ -51,6 +54,26 @@ ChildResult run_embree(const Scene& scene, std::uint64_t steps, bool robust) {
     r.performed = a.reason == Reason::cycle ? a.reflections + 1 : a.reflections;
     r.setup = a.setup_seconds;
     return r;
+}
+
+// The peak resident memory (KiB) of a child from the moment its scene is
+// built to the end of `trace`. The kernel's high-water mark is reset after
+// the scene (clear_refs 5), so the scene's live data counts but not its
+// transient building peak, which in the process's ru_maxrss hides a tracer
+// smaller than that transient (Embree's, at every size here). Reflections
+// do not add memory, so a short trace measures the same peak.
+long tracing_peak_kb(const std::function<Scene()>& make,
+                     const std::function<void(const Scene&)>& trace) {
+    const ChildOutput out = run_in_child([&] {
+        const Scene scene = make();
+        std::ofstream("/proc/self/clear_refs") << "5";
+        trace(scene);
+        std::ifstream status("/proc/self/status");
+        for (std::string line; std::getline(status, line);)
+            if (line.rfind("VmHWM:", 0) == 0) return line.substr(6); // "   1234 kB"
+        return std::string();
+    });
+    return std::atol(out.bytes.c_str());
 }
 
 // Net reflections per second of each run (setup excluded), and the last answer.
@@ -140,6 +163,9 @@ int embree_baseline(const Options& o) {
                  "exact / Embree", "exact / Embree robust", "float / Embree",
                  "Embree setup s (robust)", "exact setup s", "peak RSS MB exact; Embree",
                  "outcome exact; float; Embree; robust"});
+    const std::uint64_t memory_steps = 1000; // reflections of the memory runs
+    Table memory({"scene", "scene MB", "exact MB", "Embree MB", "Embree robust MB",
+                  "exact / Embree", "exact - scene MB", "Embree - scene MB"});
     std::vector<std::int64_t> sizes = {100, 1000, 10'000};
     if (!o.quick) sizes.push_back(100'000);
     int failures = 0;
@@ -168,9 +194,27 @@ int embree_baseline(const Options& o) {
                        fixed(median(exact.rss_mb), 1) + "; " + fixed(median(fast.rss_mb), 1),
                        outcome(exact.last) + "; " + outcome(flt.last) + "; " + outcome(fast.last) +
                            "; " + outcome(robust.last)});
+            const long scene_kb = tracing_peak_kb(make, [](const Scene&) {});
+            const long exact_kb = tracing_peak_kb(
+                make, [&](const Scene& s) { run_exact(s, memory_steps, Engine::lattice); });
+            const long fast_kb =
+                tracing_peak_kb(make, [&](const Scene& s) { run_embree(s, memory_steps, false); });
+            const long robust_kb =
+                tracing_peak_kb(make, [&](const Scene& s) { run_embree(s, memory_steps, true); });
+            memory.add({"random " + std::to_string(dim) +
+                            "D n=" + power_of_ten(static_cast<std::uint64_t>(n)),
+                        mb(scene_kb), mb(exact_kb), mb(fast_kb), mb(robust_kb),
+                        ratio(static_cast<double>(exact_kb), static_cast<double>(fast_kb)),
+                        mb(exact_kb - scene_kb), mb(fast_kb - scene_kb)});
         }
     std::printf("### Reflections per second (median, setup excluded)\n\n");
     speed.print();
+    std::printf("### Peak memory while tracing\n\n");
+    std::printf("Peak resident memory of a process from the moment its scene (GMP rationals) "
+                "is built: \"scene\" builds it only; the others then trace %s reflections "
+                "(memory does not grow with them).\n\n",
+                power_of_ten(memory_steps).c_str());
+    memory.print();
 
     // Divergence: the exact path (the lattice engine's reflection points,
     // recorded) against Embree's, reflection by reflection, on several seeds.

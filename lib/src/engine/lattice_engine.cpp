@@ -508,7 +508,9 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
         break;
     }
     auto begin = std::chrono::steady_clock::now();
-    const shoot::CrossSectionGrid<Int, M> section(ls, 1, run.setup_poll());
+    // Four cells an element to start from: the grid coarsens until its
+    // registrations fit its limits, so this refines only small scenes.
+    const shoot::CrossSectionGrid<Int, M> section(ls, 4, run.setup_poll());
     Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = section.cell_count();

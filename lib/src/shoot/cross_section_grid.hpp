@@ -23,13 +23,28 @@
 // sigma_k * (c - a_k) otherwise (from a_k = c - sigma_k sigma_0 x_0). Across
 // one cell a_k varies by less than the cell side h_k, so every hit depth of a
 // member lies in [key, key + h_k - 1], where key is the member's smallest
-// possible depth in the cell (clamped to the element's own depth range).
-// Members sorted by key: those with key + h - 1 <= D(p) (h the largest side)
-// lie behind p and are skipped (counted without branches, or found by a
-// binary search in long lists), and once a hit at depth D* is known,
-// members with key > D* cannot be met at or before it. All
-// arithmetic is exact integer arithmetic on values bounded as in
-// lattice_int.hpp (|a_j| <= 2B, offsets into the grid <= 4B, keys <= 3B).
+// possible depth in the cell (clamped to the element's own depth range, so
+// key <= the element's largest depth). Members sorted by key: those with
+// key + h - 1 <= D(p) (h the largest side) lie behind p, and once a hit at
+// depth D* is known, members with key > D* cannot be met at or before it.
+//
+// Keys are stored in 32 bits, as the quantum q = floor((key - base) / 2^s)
+// (base: the least depth of the bundle's elements, so no key is below it;
+// s: just enough that the depth range fits). Only these two filters read them, and a quantum bounds
+// the key on both sides, base + q 2^s <= key <= base + (q + 1) 2^s - 1, so a member is skipped as
+// behind when even its upper bound is, and the scan stops when even the lower bound passes D*:
+// every decision stays exact, the filters only let through a few more members (s is 0 when the
+// depths fit in 32 bits; 8 on the benchmark's 3D boxes, whose depths reach 10^12). With the plane
+// kept inline, an entry is 16 bytes for int64.
+//
+// Long member lists (some 70 a cell at 10^5 mirrors) are not counted
+// through from their start: each cell row also lists, for every slab of
+// depth [base + i 2^w, base + (i + 1) 2^w), the first member not behind the
+// slab's least depth. A query starts at its depth's slab; the members behind
+// it all come before the next slab's start, so it counts them over its own
+// slab only, without branches. All arithmetic is exact integer arithmetic
+// on values bounded as in lattice_int.hpp (|a_j| <= 2B, offsets into the
+// grid <= 4B, keys <= 3B).
 //
 // Each direction has its own bundle, so one-sided elements cost nothing at
 // query time: a bundle registers only the elements that act on its
@@ -46,6 +61,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 namespace orthoray::shoot {
@@ -75,8 +91,8 @@ public:
     std::size_t fullest_cell() const {
         std::size_t most = 0;
         for (const Bundle& b : bundles_)
-            for (std::size_t c = 0; c + 1 < b.offsets.size(); ++c)
-                most = std::max<std::size_t>(most, b.offsets[c + 1] - b.offsets[c]);
+            for (std::size_t c = 0; c < b.cell_total; ++c)
+                most = std::max<std::size_t>(most, b.cell_end(c) - b.cell_begin(c));
         return most;
     }
     // The side of a cell of direction `negative`'s cross-section on its
@@ -86,34 +102,66 @@ public:
     const Counter& counter() const { return counter_; }
     std::size_t cell_count() const {
         std::size_t total = 0;
-        for (const Bundle& b : bundles_) total += b.offsets.size() - 1;
+        for (const Bundle& b : bundles_) total += b.cell_total;
         return total;
     }
 
 private:
     static constexpr int S = M - 1; // cross-section dimension
+    // Slabs a cell row indexes: about this many members a slab, at most
+    // 2^max_slab_bits slabs.
+    static constexpr std::size_t members_per_slab = 4;
+    static constexpr unsigned max_slab_bits = 6;
 
     using Item = ElementBox<Int, M>;
-    // A registration of an element in a cell. The plane's axis and offset are
-    // copied in, so that members met behind p or beyond the best hit so far
-    // are rejected without loading the element.
+    // A registration of an element in a cell: 16 bytes for int64. The
+    // plane's axis and offset are copied in, so that members met behind p
+    // or beyond the best hit so far are rejected without loading the
+    // element.
     struct Member {
-        Int key;   // smallest depth at which a line of the cell can meet the element
-        Int plane; // the element's plane x_axis = c, as sigma_axis * c
-        std::uint32_t item;
-        std::uint8_t axis;
+        Int plane;         // the element's plane x_axis = c, as sigma_axis * c
+        std::uint32_t key; // quantum of the smallest depth at which a line of the cell can meet it
+        std::uint32_t item_and_axis; // item << 2 | normal axis
     };
     // The lines of one direction: a grid over their cross-section.
     struct Bundle {
-        Int origin[M];                      // smallest a_j over all elements
-        Int limit[M];                       // largest a_j
-        unsigned shift[M]{};                // cell side on axis j is 2^shift[j]
-        std::int64_t cells[M]{};            // cells on axis j
-        Int reach{};                        // largest cell side minus one
-        Int far{};                          // larger than every element's depth
-        bool empty = true;                  // no element acts on this direction
-        std::vector<std::uint32_t> offsets; // CSR: cell -> members, sorted by key
-        std::vector<Member> members;
+        Int origin[M];           // smallest a_j over all elements
+        Int limit[M];            // largest a_j
+        unsigned shift[M]{};     // cell side on axis j is 2^shift[j]
+        std::int64_t cells[M]{}; // cells on axis j
+        std::size_t cell_total = 0;
+        Int reach{};             // largest cell side minus one
+        Int far{};               // larger than every element's depth
+        Int base{};              // no key is smaller
+        unsigned key_shift = 0;  // a key's quantum is floor((key - base) / 2^key_shift)
+        unsigned slab_shift = 0; // slab i holds the depths base + [i, i + 1) 2^slab_shift
+        std::size_t slabs = 1;   // slabs a cell row indexes
+        bool empty = true;       // no element acts on this direction
+        // Cell c's row, rows[c * (slabs + 1) ..]: for slab i the first member
+        // not behind the slab's least depth (for slab 0, the cell's first
+        // member), then the cell's end.
+        std::vector<std::uint32_t> rows;
+        std::vector<Member> members; // of each cell, sorted by key
+
+        std::size_t cell_begin(std::size_t c) const { return rows[c * (slabs + 1)]; }
+        std::size_t cell_end(std::size_t c) const { return rows[c * (slabs + 1) + slabs]; }
+        // floor((x - base + 1) / 2^key_shift) clamped to [0, 2^32]: the
+        // members whose quantum is below it all have key <= x (the upper
+        // bound base + (q + 1) 2^key_shift - 1 of a quantum q is <= x).
+        std::uint64_t quanta_at_most(const Int& x) const {
+            const Int q = Int(x - base + 1) >> key_shift;
+            if (q < 0) return 0;
+            if (Int(std::int64_t{1} << 32) < q) return std::uint64_t{1} << 32;
+            return static_cast<std::uint64_t>(to_index(q));
+        }
+        // floor((x - base) / 2^key_shift) for x >= base, clamped to 2^32: a
+        // member whose quantum exceeds it has key > x.
+        std::uint64_t quantum_of(const Int& x) const {
+            const Int q = Int(x - base) >> key_shift;
+            if (q < 0) return 0;
+            if (Int(std::int64_t{1} << 32) < q) return std::uint64_t{1} << 32;
+            return static_cast<std::uint64_t>(to_index(q));
+        }
     };
 
     std::vector<Item> items_;
@@ -132,6 +180,9 @@ template <class Int, int M, class Counter>
 CrossSectionGrid<Int, M, Counter>::CrossSectionGrid(const LatticeScene& scene,
                                                     std::int64_t cells_per_element,
                                                     const lattice::SetupPoll& poll) {
+    // A member names its element in 30 bits (Member::item_and_axis); a scene
+    // of 2^30 elements would not fit in memory anyway.
+    if (scene.elements.size() >= (std::size_t{1} << 30)) throw std::bad_alloc();
     items_.reserve(scene.elements.size());
     for (const LatticeElement& e : scene.elements) {
         poll();
@@ -178,7 +229,8 @@ template <class Int, int M, class Counter>
 void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
                                               std::int64_t cells_per_element,
                                               const lattice::SetupPoll& poll) {
-    bundle.offsets.assign(2, 0);
+    bundle.rows.assign(2, 0);
+    bundle.cell_total = 1;
     // The elements this direction's rays can meet: those acting on it.
     std::vector<std::uint32_t> acting;
     for (std::uint32_t e = 0; e < items_.size(); ++e)
@@ -273,44 +325,101 @@ void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
             ++i[j];
         }
     };
-    for (const std::uint32_t e : acting) {
+    // The depths of the elements: keys lie in [base, far - 1].
+    for (std::size_t n = 0; n < acting.size(); ++n) {
         poll();
-        const Item& it = items_[e];
-        const Int d = s0 * it.lo[0] < s0 * it.hi[0] ? Int(s0 * it.hi[0]) : Int(s0 * it.lo[0]);
-        if (bundle.far < d) bundle.far = d;
+        const Item& it = items_[acting[n]];
+        const Int x_lo = s0 * it.lo[0], x_hi = s0 * it.hi[0];
+        const Int d_lo = x_lo < x_hi ? x_lo : x_hi, d_hi = x_lo < x_hi ? x_hi : x_lo;
+        if (n == 0 || d_lo < bundle.base) bundle.base = d_lo;
+        if (n == 0 || bundle.far < d_hi) bundle.far = d_hi;
     }
     bundle.far += 1;
+    const unsigned depth_bits = lattice::bit_length(Int(bundle.far - bundle.base));
+    bundle.key_shift = depth_bits > 32 ? depth_bits - 32 : 0;
     // Registrations grow with the elements' shadows measured in cells. When
     // they pass 10 an element, fewer, larger cells (a quarter as many in 3D)
     // hold the same lines in far less memory: at 10^5 random mirrors this
     // cut the members from 10.8M to 4.3M at equal speed, while up to 10^4
     // the finer grid stays under the limit and is faster (docs/shooting.md).
-    auto count = [&] {
-        bundle.offsets.assign(static_cast<std::size_t>(total) + 1, 0);
-        for (const std::uint32_t e : acting)
-            for_each_cell(e, [&](std::int64_t c, const Int&) { ++bundle.offsets[c + 1]; });
-        std::size_t registrations = 0;
-        for (std::uint32_t n : bundle.offsets) registrations += n;
-        return registrations;
+    // Past 2^15 elements the members no longer fit in any cache, a shot
+    // misses anyway, and the slabs keep long member lists cheap: there a
+    // limit of 5 an element cuts the members again (37 MB less peak memory
+    // at 10^5 random mirrors) and was faster, while at 10^4 it cost 10%.
+    // A small scene may always take 2^13 registrations (128 KB a
+    // direction): at 10^2 random mirrors the finer grid that allows is
+    // 1.3x faster. The count of a layout is the sum over the elements of
+    // the cells their shadow boxes span, one product each.
+    const std::size_t per_element = acting.size() > (std::size_t{1} << 15) ? 5 : 10;
+    const std::size_t allowed = std::max(per_element * acting.size(), std::size_t{1} << 13);
+    auto registrations = [&] {
+        std::size_t sum = 0;
+        for (const std::uint32_t e : acting) {
+            poll();
+            std::size_t spanned = 1;
+            for (int j = 0; j < S; ++j) {
+                Int lo, hi;
+                shadow(items_[e], j + 1, lo, hi);
+                const std::int64_t first =
+                    to_index(Int(Int(lo - bundle.origin[j]) >> bundle.shift[j]));
+                const std::int64_t last =
+                    to_index(Int(Int(hi - bundle.origin[j]) >> bundle.shift[j]));
+                spanned *= static_cast<std::size_t>(last - first + 1);
+            }
+            sum += spanned;
+        }
+        return sum;
     };
-    while (count() > 10 * acting.size() && k > 1) {
+    while (registrations() > allowed && k > 1) {
         k /= 2;
         lay_out();
     }
-    for (std::size_t c = 1; c < bundle.offsets.size(); ++c)
-        bundle.offsets[c] += bundle.offsets[c - 1];
-    bundle.members.resize(bundle.offsets.back());
-    std::vector<std::uint32_t> fill(bundle.offsets.begin(), bundle.offsets.end() - 1);
+    std::vector<std::uint32_t> offsets(static_cast<std::size_t>(total) + 1, 0);
     for (const std::uint32_t e : acting)
-        for_each_cell(e, [&](std::int64_t c, const Int& key) {
-            bundle.members[fill[c]++] =
-                Member{key, Int(sigma(negative, items_[e].axis) * items_[e].lo[items_[e].axis]), e,
-                       items_[e].axis};
-        });
-    for (std::size_t c = 0; c + 1 < bundle.offsets.size(); ++c)
-        std::sort(bundle.members.begin() + bundle.offsets[c],
-                  bundle.members.begin() + bundle.offsets[c + 1],
-                  [](const Member& x, const Member& y) { return x.key < y.key; });
+        for_each_cell(e, [&](std::int64_t c, const Int&) { ++offsets[c + 1]; });
+    for (std::size_t c = 1; c < offsets.size(); ++c) offsets[c] += offsets[c - 1];
+    bundle.members.resize(offsets.back());
+    bundle.cell_total = static_cast<std::size_t>(total);
+    {
+        std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+        for (const std::uint32_t e : acting)
+            for_each_cell(e, [&](std::int64_t c, const Int& key) {
+                const Item& it = items_[e];
+                bundle.members[fill[c]++] =
+                    Member{Int(sigma(negative, it.axis) * it.lo[it.axis]),
+                           static_cast<std::uint32_t>(bundle.quantum_of(key)), e << 2 | it.axis};
+            });
+    }
+    // Ties broken by the element, so that the order does not depend on the sort.
+    for (std::size_t c = 0; c + 1 < offsets.size(); ++c)
+        std::sort(bundle.members.begin() + offsets[c], bundle.members.begin() + offsets[c + 1],
+                  [](const Member& x, const Member& y) {
+                      return x.key < y.key || (x.key == y.key && x.item_and_axis < y.item_and_axis);
+                  });
+    // About members_per_slab members a slab on average, at most max_slabs.
+    const std::size_t per_cell = bundle.members.size() / bundle.cell_total;
+    unsigned slab_bits = 0;
+    while ((std::size_t{members_per_slab} << slab_bits) < per_cell && slab_bits < max_slab_bits)
+        ++slab_bits;
+    bundle.slabs = std::size_t{1} << slab_bits;
+    bundle.slab_shift = depth_bits > slab_bits ? depth_bits - slab_bits : 0;
+    const std::size_t width = bundle.slabs + 1;
+    bundle.rows.assign(bundle.cell_total * width, 0);
+    for (std::size_t c = 0; c < bundle.cell_total; ++c) {
+        poll();
+        std::uint32_t first = offsets[c];
+        const std::uint32_t end = offsets[c + 1];
+        bundle.rows[c * width] = first;
+        for (std::size_t slab = 1; slab < bundle.slabs; ++slab) {
+            // Behind every point of the slab: key + reach <= its least depth.
+            const Int least =
+                bundle.base + (Int(static_cast<std::int64_t>(slab)) << bundle.slab_shift);
+            const std::uint64_t behind = bundle.quanta_at_most(Int(least - bundle.reach));
+            while (first != end && bundle.members[first].key < behind) ++first;
+            bundle.rows[c * width + slab] = first;
+        }
+        bundle.rows[c * width + bundle.slabs] = end;
+    }
 }
 
 template <class Int, int M, class Counter>
@@ -328,36 +437,44 @@ Shot<Int> CrossSectionGrid<Int, M, Counter>::shoot(const Int (&p)[M], unsigned n
         c = c * bundle.cells[j] + to_index(Int(Int(a - bundle.origin[j]) >> bundle.shift[j]));
     }
     counter_.cell();
-    const Member* first = bundle.members.data() + bundle.offsets[c];
-    const Member* last = bundle.members.data() + bundle.offsets[c + 1];
     const Int depth = s[0] * p[0];
-    // Members whose every depth in the cell is <= depth lie behind p.
-    const Int behind = depth - bundle.reach;
-    // Cells hold a handful of members: counting them without branches beats
-    // a binary search, whose jumps the processor cannot predict.
-    if (last - first <= 64) {
-        std::ptrdiff_t skip = 0;
-        for (const Member* m = first; m != last; ++m) skip += !(behind < m->key);
-        first += skip;
-    } else {
-        first = std::upper_bound(first, last, behind,
-                                 [](const Int& x, const Member& m) { return x < m.key; });
+    // Start at the depth's slab, whose earlier members lie behind p.
+    std::size_t slab = 0;
+    if (bundle.base < depth) {
+        const Int i = Int(depth - bundle.base) >> bundle.slab_shift;
+        slab = i < Int(static_cast<std::int64_t>(bundle.slabs))
+                   ? static_cast<std::size_t>(to_index(i))
+                   : bundle.slabs - 1;
     }
+    const std::uint32_t* row = bundle.rows.data() + c * (bundle.slabs + 1);
+    const Member* first = bundle.members.data() + row[slab];
+    const Member* last = bundle.members.data() + row[bundle.slabs];
+    // Members whose every depth in the cell is <= depth lie behind p; all of
+    // them come before the next slab's start (whose least depth exceeds p's),
+    // so counting them over this slab's few members, without branches, finds
+    // where the rest begins.
+    const std::uint64_t behind = bundle.quanta_at_most(Int(depth - bundle.reach));
+    const Member* slab_end = bundle.members.data() + row[slab + 1];
+    std::ptrdiff_t skip = 0;
+    for (const Member* m = first; m != slab_end; ++m) skip += m->key < behind;
+    first += skip;
     // t = sigma_a (c - p_a) = plane - sigma_a p_a.
     Int sp[M];
     for (int j = 0; j < M; ++j) sp[j] = s[j] * p[j];
     // The best hit's depth; until one is found, past every member's depth.
     Int best = bundle.far;
-    for (; first != last && !(best < first->key); ++first) {
+    std::uint64_t beyond = bundle.quantum_of(best);
+    for (; first != last && !(beyond < first->key); ++first) {
         counter_.member();
-        const int a = first->axis;
+        const int a = static_cast<int>(first->item_and_axis & 3u);
         const Int t = first->plane - sp[a];
         if (t <= 0 || best < Int(depth + t)) continue;
         counter_.box_test();
-        const Item& it = items_[first->item];
+        const Item& it = items_[first->item_and_axis >> 2];
         if (it.holds(p, s, t)) {
             shot.record(t, a, it.absorber, it.index);
             best = depth + shot.t;
+            beyond = bundle.quantum_of(best);
         }
     }
     return shot;
