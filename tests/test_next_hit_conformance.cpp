@@ -239,3 +239,35 @@ TEMPLATE_TEST_CASE("every next-hit structure skips one-sided elements seen from 
     // not act on the direction they are built for.
     check_piece_tables<Int>(76, scenes_for<Int>(100), 50);
 }
+
+TEST_CASE("the cross-section grid past 2^15 elements matches brute force",
+          "[shoot][section][slow]") {
+    // Past 2^15 elements the grid allows at most 5 registrations an element
+    // (cross_section_grid.hpp), a coarser layout no small scene reaches:
+    // 40,000 random elements of lengths 1 to 40 in a cube of side 2,000.
+    std::mt19937_64 rng(17'215);
+    LatticeScene ls;
+    ls.dim = 3;
+    for (int i = 0; i < 40'000; ++i) {
+        LatticeElement e;
+        e.axis = test::pick(rng, 0, 2);
+        e.absorber = test::pick(rng, 0, 9) == 0;
+        for (int j = 0; j < 3; ++j) {
+            const int a = test::pick(rng, -1000, 1000);
+            e.lo[j] = a;
+            e.hi[j] = j == e.axis ? a : a + test::pick(rng, 1, 40);
+        }
+        ls.elements.push_back(e);
+    }
+    const SectionAt<std::int64_t, 3, 4> grid(ls); // the engine's density
+    const int shots = test::case_count(400);
+    for (int shot = 0; shot < shots; ++shot) {
+        std::int64_t p[3];
+        for (std::int64_t& x : p) x = test::pick(rng, -1100, 1100);
+        const unsigned negative = static_cast<unsigned>(test::pick(rng, 0, 7));
+        INFO("shot " << shot);
+        const Shot<std::int64_t> want = test::brute_force_shot<std::int64_t, 3>(ls, p, negative);
+        require_same<std::int64_t, 3>("cross-section grid", ls, want, grid.shoot(p, negative), p,
+                                      negative);
+    }
+}
