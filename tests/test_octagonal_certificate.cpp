@@ -9,6 +9,7 @@
 #include "support/portable_random.hpp"
 #include "support/random_octagonal.hpp"
 #include "support/run_cli.hpp"
+#include "support/slide_box.hpp"
 #include "support/test_files.hpp"
 
 #include "orthoray/certificate.hpp"
@@ -400,14 +401,8 @@ TEST_CASE("a walk of 10^18 reflections after a tail is certified and verified",
     // and the certificate is a few searches, in both formats.
     const Integer n("1000000000000000000");
     const Integer w = n + 3, h = n - 11, x0 = n / 3 + 1;
-    Scene s;
-    s.add_diagonal(ElementKind::mirror, Rational(x0), 0, Rational(x0 + 1), 1);
-    s.add_mirror(0, 0, {{0, Rational(h)}});
-    s.add_mirror(0, Rational(w), {{0, Rational(h)}});
-    s.add_mirror(1, 0, {{0, Rational(w)}});
-    s.add_mirror(1, Rational(h), {{0, Rational(w)}});
-    shoot(s, Rational(n / 2 + 5), Rational(n / 7 + 2), 1, 1);
-    s.target() = {Rational(2 * w), Rational(2 * h), 0};
+    const Scene s = test::slide_box(w, h, x0, Rational(n / 2 + 5), Rational(n / 7 + 2),
+                                    {Rational(2 * w), Rational(2 * h), 0});
     for (const CertificateFormat format : {CertificateFormat::text, CertificateFormat::jsonl}) {
         const Certified c = certify(s, Engine::induction, format);
         INFO(c.text);

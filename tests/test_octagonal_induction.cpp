@@ -5,6 +5,7 @@
 #include "support/case_count.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_octagonal.hpp"
+#include "support/slide_box.hpp"
 
 #include "orthoray/exchange.hpp"
 #include "orthoray/pieces.hpp"
@@ -212,14 +213,8 @@ TEST_CASE("a 45-degree billiard with a ray sliding into the wall: tail and perio
     for (int i = 0; i < cases; ++i) {
         const int w = test::pick(rng, 50, 400), h = test::pick(rng, 50, 400);
         const int x0 = test::pick(rng, 1, w - 2);
-        Scene s;
-        s.add_diagonal(ElementKind::mirror, Rational(x0), 0, Rational(x0 + 1), 1);
-        s.add_mirror(0, 0, {{0, Rational(h)}});
-        s.add_mirror(0, Rational(w), {{0, Rational(h)}});
-        s.add_mirror(1, 0, {{0, Rational(w)}});
-        s.add_mirror(1, Rational(h), {{0, Rational(w)}});
-        shoot(s, test::pick(rng, 1, w - 1), test::pick(rng, 1, h - 1), 1, 1);
-        s.target() = {Rational(2 * w), 0, 0};
+        const int x = test::pick(rng, 1, w - 1), y = test::pick(rng, 1, h - 1);
+        const Scene s = test::slide_box(w, h, x0, x, y, {Rational(2 * w), 0, 0});
         INFO("case " << i << "\n" << write_scene(s));
         SolveOptions reference;
         reference.engine = Engine::reference;
