@@ -35,6 +35,16 @@ LatticeScene random_lattice(std::mt19937_64& rng, int range, int n) {
     return ls;
 }
 
+// Adds the 2D segment on the line x_axis = c over [lo, hi].
+void add_segment(LatticeScene& ls, int axis, int c, int lo, int hi) {
+    LatticeElement e;
+    e.axis = axis;
+    e.lo[axis] = e.hi[axis] = c;
+    e.lo[1 - axis] = lo;
+    e.hi[1 - axis] = hi;
+    ls.elements.push_back(e);
+}
+
 } // namespace
 
 TEST_CASE("piece tables merge runs into few pieces", "[pieces]") {
@@ -43,14 +53,7 @@ TEST_CASE("piece tables merge runs into few pieces", "[pieces]") {
     // direction) has at most a handful of pieces.
     LatticeScene ls;
     ls.dim = 2;
-    auto wall = [&](int axis, int c, int lo, int hi) {
-        LatticeElement e;
-        e.axis = axis;
-        e.lo[axis] = e.hi[axis] = c;
-        e.lo[1 - axis] = lo;
-        e.hi[1 - axis] = hi;
-        ls.elements.push_back(e);
-    };
+    auto wall = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
     wall(0, 0, 0, 6);
     wall(0, 4, 0, 6);
     wall(1, 0, 0, 4);
@@ -93,14 +96,7 @@ TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pi
     for (const int mirrors : {12, 150}) {
         LatticeScene ls;
         ls.dim = 2;
-        auto add = [&](int axis, int c, int lo, int hi) {
-            LatticeElement e;
-            e.axis = axis;
-            e.lo[axis] = e.hi[axis] = c;
-            e.lo[1 - axis] = lo;
-            e.hi[1 - axis] = hi;
-            ls.elements.push_back(e);
-        };
+        auto add = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
         const int length = 4 * mirrors;
         add(1, 0, 0, length); // the wall y = 0
         for (int k = 1; k < mirrors; ++k) add(0, 4 * k, 1 + k % 3, 2 + k % 3);
