@@ -55,3 +55,26 @@ TEST_CASE("a diagonal scene's certificate verifies, and render draws it", "[cli]
     CHECK(drawn.status == 0);
     CHECK(drawn.out.find("wrote ") == 0);
 }
+
+TEST_CASE("the walk through the command line: pieces shows the collisions, induction certifies",
+          "[cli][octagonal]") {
+    // The tail scene's map is no bijection (the x-mirror's end meets a ray
+    // sliding along the lower '/'): `pieces` lists its collisions, and the
+    // induction engine's certificate is a walk that verify accepts.
+    TempDir dir;
+    const std::string file = dir.write("tail.scene", tail_scene);
+    const CliResult pieces = run_cli("pieces " + quote(file));
+    INFO(pieces.out << pieces.err);
+    CHECK(pieces.status == 0);
+    CHECK(pieces.out.find("\ncollision ") != std::string::npos);
+    const std::string cert = dir.path("walk.cert");
+    const CliResult solved =
+        run_cli("solve --engine induction --certificate " + quote(cert) + " " + quote(file));
+    CHECK(solved.status == 1);
+    CHECK(solved.out.find("induction") != std::string::npos);
+    CHECK(slurp(cert).find("\nwalk-search ") != std::string::npos);
+    const CliResult checked = run_cli("verify " + quote(file) + " " + quote(cert));
+    INFO(checked.out << checked.err);
+    CHECK(checked.status == 0);
+    CHECK(checked.out.find("valid: cycle, 3 reflections") != std::string::npos);
+}
