@@ -3,9 +3,9 @@
 // beyond simulation, and agreement with the reference tracer on thousands
 // of seeded random octagonal scenes.
 #include "support/case_count.hpp"
+#include "support/octagonal_families.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_octagonal.hpp"
-#include "support/slide_box.hpp"
 
 #include "orthoray/exchange.hpp"
 #include "orthoray/pieces.hpp"
@@ -26,33 +26,9 @@ Answer induce_scene(const Scene& scene) {
     return solve(scene, o);
 }
 
-// The diamond |x| + |y| = n: four diagonal mirrors.
-Scene diamond(const Integer& n) {
-    Scene s;
-    const Rational m(n);
-    s.add_diagonal(ElementKind::mirror, 0, m, m, 0);
-    s.add_diagonal(ElementKind::mirror, -m, 0, 0, m);
-    s.add_diagonal(ElementKind::mirror, 0, -m, m, 0);
-    s.add_diagonal(ElementKind::mirror, -m, 0, 0, -m);
-    s.target() = {2 * m, 2 * m, 0}; // outside: never reached
-    return s;
-}
-
-// The triangle x, y >= 0, x + y <= n: two axis mirrors and a diagonal.
-Scene triangle(const Integer& n) {
-    Scene s;
-    const Rational m(n);
-    s.add_mirror(0, 0, {{0, m}});
-    s.add_mirror(1, 0, {{0, m}});
-    s.add_diagonal(ElementKind::mirror, 0, m, m, 0);
-    s.target() = {2 * m, 2 * m, 0};
-    return s;
-}
-
-void shoot(Scene& s, const Rational& x, const Rational& y, const Integer& a, const Integer& b) {
-    s.ray().start = {x, y, 0};
-    s.ray().direction = {Rational(a), Rational(b), 0};
-}
+using test::diamond;
+using test::shoot;
+using test::triangle;
 
 } // namespace
 
