@@ -76,9 +76,11 @@ long tracing_peak_kb(const std::function<Scene()>& make,
     return std::atol(out.bytes.c_str());
 }
 
-// Net reflections per second of each run (setup excluded), and the last answer.
+// Net reflections per second of each run (setup excluded), its setup, and the
+// last answer.
 struct Rates {
     std::vector<double> rate;
+    std::vector<double> setup;  // seconds before the first reflection
     std::vector<double> rss_mb; // each run's process: the scene and the tracer
     ChildResult last;
     bool ok = true;
@@ -90,6 +92,7 @@ struct Rates {
         }
         last = m.result;
         rss_mb.push_back(static_cast<double>(m.max_rss_kb) / 1024);
+        setup.push_back(m.result.setup);
         const double net = m.result.wall - m.result.setup;
         rate.push_back(net > 0 ? static_cast<double>(m.result.performed) / net : 0);
     }
@@ -160,9 +163,9 @@ int embree_baseline(const Options& o) {
                 RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH,
                 power_of_ten(steps).c_str(), o.runs);
     Table speed({"scene", "exact refl/s", "float refl/s", "Embree refl/s", "Embree robust refl/s",
-                 "exact / Embree", "exact / Embree robust", "float / Embree",
-                 "Embree setup s (robust)", "exact setup s", "peak RSS MB exact; Embree",
-                 "outcome exact; float; Embree; robust"});
+                 "exact / Embree", "exact / Embree robust", "exact / float", "float / Embree",
+                 "Embree setup s (robust)", "exact setup s", "exact setup / Embree setup",
+                 "peak RSS MB exact; Embree", "outcome exact; float; Embree; robust"});
     const std::uint64_t memory_steps = 1000; // reflections of the memory runs
     Table memory({"scene", "scene MB", "exact MB", "Embree MB", "Embree robust MB",
                   "exact / Embree", "exact - scene MB", "Embree - scene MB"});
@@ -188,9 +191,9 @@ int embree_baseline(const Options& o) {
             speed.add({"random " + std::to_string(dim) +
                            "D n=" + power_of_ten(static_cast<std::uint64_t>(n)),
                        rate_text(e), rate_text(f), rate_text(b), rate_text(br), ratio(e, b),
-                       ratio(e, br), ratio(f, b),
-                       sig3(fast.last.setup) + " (" + sig3(robust.last.setup) + ")",
-                       sig3(exact.last.setup),
+                       ratio(e, br), ratio(e, f), ratio(f, b),
+                       sig3(median(fast.setup)) + " (" + sig3(median(robust.setup)) + ")",
+                       sig3(median(exact.setup)), ratio(median(exact.setup), median(fast.setup)),
                        fixed(median(exact.rss_mb), 1) + "; " + fixed(median(fast.rss_mb), 1),
                        outcome(exact.last) + "; " + outcome(flt.last) + "; " + outcome(fast.last) +
                            "; " + outcome(robust.last)});

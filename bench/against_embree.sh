@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Issue 17's one run (bench/RESULTS.md, "Issue 17 in one run"): the exact
+# engine against Embree and the float grid at 10^2..10^5 mirrors in 2D and
+# 3D (speed, setup, peak memory, where Embree's path leaves the exact one),
+# then the induction engine on 10^3..10^5 random mirrors with coordinates to
+# 10^18, CPU time by perf stat when it is installed. Run it on an idle
+# machine; it takes about half an hour.
+#
+#   bench/against_embree.sh [BUILD_DIR] [OUT_DIR]
+#
+# Writes OUT_DIR/embree.md and OUT_DIR/induction-narrow.md (default
+# bench/results); the machine and load are in both files.
+set -euo pipefail
+build=${1:-build}
+out=${2:-bench/results}
+mkdir -p "$out"
+
+machine() {
+    echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //');" \
+        "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown); $(date -u '+%F %R UTC');" \
+        "load average $(cut -d' ' -f1-3 /proc/loadavg)."
+}
+
+"$build/bench/orthoray_bench" --mode embree --steps 3e6 --runs 5 --csv "" >"$out/embree.md"
+
+{
+    echo "# Induction on random mirrors, coordinates to 10^18 (issue 17, item 4)"
+    echo
+    machine
+    echo
+    echo '```'
+    "$build/bench/induction_bench" --mirrors 1000 --mirrors 10000 --runs 5 --sim-cap 0 --csv ""
+    "$build/bench/induction_bench" --mirrors 100000 --runs 1 --sim-cap 0 --csv ""
+    echo '```'
+    if command -v perf >/dev/null; then
+        echo
+        echo "CPU time of one process each (perf stat -e task-clock; scene generation included):"
+        echo
+        for n in 1000 10000 100000; do
+            perf stat -x, -e task-clock "$build/bench/induction_bench" --mirrors "$n" --runs 1 \
+                --sim-cap 0 --csv "" 2>&1 >/dev/null |
+                awk -F, -v n="$n" '/task-clock/ {printf "- %s mirrors: %.3f s CPU\n", n, $1 / 1000}'
+        done
+    fi
+    echo
+    echo "At the end: load average $(cut -d' ' -f1-3 /proc/loadavg)."
+} >"$out/induction-narrow.md"
+echo "wrote $out/embree.md and $out/induction-narrow.md"
