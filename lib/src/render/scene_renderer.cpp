@@ -3,6 +3,7 @@
 // reach this file already normalised by the exact frame (frame.cpp).
 #include "orthoray/render.hpp"
 
+#include "render/element_shapes.hpp"
 #include "render/frame.hpp"
 #include "render/markers.hpp"
 #include "render/path_thinner.hpp"
@@ -16,32 +17,18 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <unordered_set>
 
 namespace orthoray {
 namespace {
 
+using render::kind_class;
 using render::number_text;
 using render::Pixel;
 using render::Point3;
 using render::SvgWriter;
+using render::View;
 
 constexpr double caption_line = 18;
-
-// Element kinds, in ElementKind's order, as CSS class suffixes.
-constexpr std::array<const char*, 3> kind_class{"mirror", "absorber", "splitter"};
-
-// A view with what is drawn in it.
-struct View : render::ViewPlacement {
-    // SVG path data by element kind: edge-on shapes, faces (3D), and the
-    // ticks on the acting side of one-sided elements.
-    std::array<std::string, 3> edges, faces, ticks;
-    std::size_t shapes = 0;
-    render::PathThinner path;
-
-    View(render::ViewPlacement placement, std::size_t max_vertices)
-        : ViewPlacement(std::move(placement)), path(max_vertices) {}
-};
 
 // The path's colour at `fraction` of its length: amber early, through
 // vermilion, to deep purple late. Hues away from the mirrors' blue and the
@@ -90,66 +77,8 @@ struct SceneRenderer::Impl {
         for (render::ViewPlacement& v : page.views) views.emplace_back(std::move(v), vertices);
         page_width = page.width;
         page_height = page.height;
-        draw_elements();
-    }
-
-    // Elements as compact path data: a segment where the view sees the
-    // element edge-on, a quadrilateral where it sees its face. Shapes that
-    // snap to the same half pixels as one already drawn are skipped.
-    void draw_elements() {
         elements_total = scene.elements.size();
-        const std::size_t cap = options.max_element_shapes / views.size();
-        for (View& v : views) {
-            std::unordered_set<std::string> seen;
-            for (const Element& e : scene.elements) {
-                if (v.shapes >= cap) break;
-                // A diagonal (2D) runs between its ends, not its box's corners.
-                Point3 c0 = frame.normalised(e.is_diagonal() ? e.from() : e.lo),
-                       c1 = frame.normalised(e.is_diagonal() ? e.to() : e.hi);
-                std::vector<Pixel> corners;
-                bool face = false;
-                if (scene.dim == 2 || (!v.oblique && (e.axis == v.a || e.axis == v.b))) {
-                    corners = {v.map(c0), v.map(c1)};
-                } else {
-                    face = true;
-                    // The rectangle's corners: the two non-normal axes vary.
-                    int p = -1, q = -1;
-                    for (int j = 0; j < 3; ++j)
-                        if (j != e.axis) (p < 0 ? p : q) = j;
-                    Point3 k = c0;
-                    for (int corner : {0, 1, 3, 2}) {
-                        k[p] = corner & 1 ? c1[p] : c0[p];
-                        k[q] = corner & 2 ? c1[q] : c0[q];
-                        corners.push_back(v.map(k));
-                    }
-                }
-                std::string d;
-                for (std::size_t i = 0; i < corners.size(); ++i) {
-                    d += i ? 'L' : 'M';
-                    d += number_text(corners[i].x);
-                    d += ' ';
-                    d += number_text(corners[i].y);
-                }
-                if (face) d += "Z";
-                const auto kind = static_cast<std::size_t>(e.kind);
-                if (!seen.insert(d + kind_class[kind]).second) continue;
-                ++v.shapes;
-                (face ? v.faces : v.edges)[kind] += d;
-                if (e.one_sided()) side_ticks(v, e, c0, corners, v.ticks[kind]);
-            }
-        }
-        elements_drawn = elements_total;
-        for (const View& v : views)
-            if (v.shapes >= cap) elements_drawn = std::min(elements_drawn, v.shapes);
-    }
-
-    // Ticks on the side a one-sided element acts on (markers.hpp): toward
-    // where a step off the element to that side lands on the page.
-    static void side_ticks(const View& v, const Element& e, const Point3& corner,
-                           const std::vector<Pixel>& shape, std::string& d) {
-        Point3 off = corner;
-        off[static_cast<std::size_t>(e.axis)] += e.side == Side::plus ? 0.01 : -0.01;
-        d += render::side_ticks(shape, v.map(corner), v.map(off));
+        elements_drawn = render::draw_elements(scene, frame, views, options.max_element_shapes);
     }
 
     // Where a ray from `from` along `direction` leaves the frame, in
