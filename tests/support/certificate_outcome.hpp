@@ -7,6 +7,7 @@
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
+#include "orthoray/solve.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -48,6 +49,44 @@ inline void expect_invalid(const Scene& scene, const std::string& text, const st
     CHECK_FALSE(outcome.input_error);
     CHECK(outcome.message.rfind("invalid: ", 0) == 0);
     CHECK(outcome.message.find(reason) != std::string::npos);
+}
+
+// A certificate and the answer it was written for.
+struct Certified {
+    Answer answer;
+    std::string text;
+};
+
+// Solves with a CertificateWriter attached and returns the whole text.
+inline Certified certify(const Scene& scene, SolveOptions options) {
+    std::stringstream out;
+    CertificateWriter writer(out, scene);
+    writer.attach(options);
+    Certified result;
+    result.answer = solve(scene, options);
+    writer.finish(result.answer);
+    result.text = out.str();
+    return result;
+}
+
+inline Certified certify(const Scene& scene, Engine engine) {
+    SolveOptions options;
+    options.engine = engine;
+    return certify(scene, options);
+}
+
+inline bool starts_with(const std::string& text, const std::string& prefix) {
+    return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+// Asserts that a tampered certificate does not verify: either the verdict
+// is "invalid: ..." or the text is rejected as malformed.
+inline void expect_rejected(const Scene& scene, const std::string& text, const std::string& what) {
+    const Outcome outcome = verify(scene, text);
+    INFO("tampering: " << what << "\ncertificate:\n" << text << "verify said: " << outcome.message);
+    CHECK_FALSE(outcome.valid);
+    CHECK_FALSE(starts_with(outcome.message, "valid"));
+    if (!outcome.input_error) CHECK(starts_with(outcome.message, "invalid"));
 }
 
 } // namespace orthoray::test
