@@ -27,6 +27,7 @@
 #include "shoot/uniform_grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <tuple>
@@ -97,7 +98,12 @@ private:
         int axis;
         Num offset, lo, hi;
     };
-    std::vector<Segment> segments_;           // sorted by (axis, offset, lo)
+    std::vector<Segment> segments_; // sorted by (axis, offset, lo)
+    // Per axis, the offsets of the lines with segments (ascending) and where
+    // each line's segments begin in segments_, with one more entry for the
+    // end: locate() searches these compact keys, not the segments.
+    std::array<std::vector<Num>, 2> line_offsets_;
+    std::array<std::vector<std::size_t>, 2> line_begins_;
     std::vector<std::vector<Owner>> owners_;  // per segment
     std::vector<std::size_t> transversal_of_; // segment * 4 + direction -> id or npos
     std::vector<std::size_t> segment_of_;     // per transversal
