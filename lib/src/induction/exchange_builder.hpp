@@ -205,11 +205,14 @@ finish_exchange(const Num& size, const Num& modulus, std::vector<Transversal> tr
 }
 
 // The exchange on integers Num (any of the three, whatever the tables' Int).
+// The transversals, in GMP integers (six a transversal), only `with_transversals`:
+// the induction does not read them, only the public exchange does.
 template <class Num, class Int>
 ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
                                   const shoot::UniformGrid<Int, 2>& grid,
                                   const shoot::PieceTable<Int>& table, const Integer (&x_in)[2],
-                                  unsigned x_negative, const lattice::SetupPoll& poll) {
+                                  unsigned x_negative, const lattice::SetupPoll& poll,
+                                  bool with_transversals = true) {
     using lattice::convert;
     Num x[2];
     for (int j = 0; j < 2; ++j) x[j] = convert<Num>(x_in[j]);
@@ -316,9 +319,10 @@ ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
     }
     const auto first = layout.locate(x, x_negative);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
-    ExchangeOn<Num> exchange =
-        finish_exchange_on(layout.size(), layout.modulus(), layout.public_transversals(),
-                           std::move(raw), layout.raw(*first), hits, poll);
+    ExchangeOn<Num> exchange = finish_exchange_on(layout.size(), layout.modulus(),
+                                                  with_transversals ? layout.public_transversals()
+                                                                    : std::vector<Transversal>{},
+                                                  std::move(raw), layout.raw(*first), hits, poll);
     exchange.first_transversal = first->first;
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];
