@@ -194,7 +194,9 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         // leaves w last in the domain and the last walked piece last in the
         // image, so the next step is a bottom one with w among its losers, or
         // equal; likewise the other way): its first links are followed here,
-        // one a link of this walk, a second chain beside this one.
+        // one a link of this walk, a second chain beside this one. It never
+        // runs off its order: both orders hold the same pieces, w is last in
+        // the other one, and this walk passes at most all of them but w.
         const Order& winners = top ? domain : image;
         Link ahead = w;
         while (p != w && total < length[w]) {
@@ -203,10 +205,8 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
             losers.prefetch_next(p);
             total += length[p];
             p = losers.prev(p);
-            if (ahead != none) {
-                ahead = winners.prev(ahead);
-                if (ahead != none) __builtin_prefetch(&length[ahead]);
-            }
+            ahead = winners.prev(ahead);
+            __builtin_prefetch(&length[ahead]);
         }
         if (p == w && total < length[w]) {
             // Whole rounds through every loser: floor((l_w - 1) / S) of them
