@@ -107,6 +107,17 @@ ExchangeLayout<Num>::ExchangeLayout(const lattice::LatticeScene& scene, const Nu
         begin = end;
     }
 
+    for (std::size_t s = 0; s < segments_.size(); ++s) {
+        const Segment& segment = segments_[s];
+        auto& offsets = line_offsets_[static_cast<std::size_t>(segment.axis)];
+        if (offsets.empty() || offsets.back() != segment.offset) {
+            offsets.push_back(segment.offset);
+            line_begins_[static_cast<std::size_t>(segment.axis)].push_back(s);
+        }
+    }
+    line_begins_[0].push_back(line_begins_[1].empty() ? segments_.size() : line_begins_[1][0]);
+    line_begins_[1].push_back(segments_.size());
+
     // Owners: each position goes to the first mirror (by lo) containing it.
     owners_.resize(segments_.size());
     for (std::size_t s = 0; s < segments_.size(); ++s) {
@@ -164,13 +175,19 @@ std::optional<std::pair<std::size_t, Num>> ExchangeLayout<Num>::locate(const Num
     for (int axis = 0; axis < 2; ++axis) {
         const Num& offset = p[axis];
         const Num& u = p[1 - axis];
-        auto after =
-            std::upper_bound(segments_.begin(), segments_.end(), 0, [&](int, const Segment& s) {
-                return std::tie(axis, offset, u) < std::tie(s.axis, s.offset, s.lo);
-            });
-        if (after == segments_.begin()) continue;
+        // The line first, then the last of its segments starting at or before u.
+        const auto& offsets = line_offsets_[static_cast<std::size_t>(axis)];
+        const auto line = std::lower_bound(offsets.begin(), offsets.end(), offset);
+        if (line == offsets.end() || *line != offset) continue;
+        const auto& begins = line_begins_[static_cast<std::size_t>(axis)];
+        const std::size_t i = static_cast<std::size_t>(line - offsets.begin());
+        const auto first = segments_.begin() + static_cast<std::ptrdiff_t>(begins[i]);
+        const auto after =
+            std::upper_bound(first, segments_.begin() + static_cast<std::ptrdiff_t>(begins[i + 1]),
+                             u, [](const Num& v, const Segment& s) { return v < s.lo; });
+        if (after == first) continue;
         const Segment& s = *(after - 1);
-        if (s.axis != axis || s.offset != offset || u > s.hi) continue;
+        if (u > s.hi) continue;
         // On a vertical segment the state is that one's, in class or not.
         const std::size_t id =
             transversal_of_[static_cast<std::size_t>(after - 1 - segments_.begin()) * 4 + negative];

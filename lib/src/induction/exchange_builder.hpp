@@ -27,6 +27,7 @@
 #include "shoot/uniform_grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <tuple>
@@ -97,7 +98,12 @@ private:
         int axis;
         Num offset, lo, hi;
     };
-    std::vector<Segment> segments_;           // sorted by (axis, offset, lo)
+    std::vector<Segment> segments_; // sorted by (axis, offset, lo)
+    // Per axis, the offsets of the lines with segments (ascending) and where
+    // each line's segments begin in segments_, with one more entry for the
+    // end: locate() searches these compact keys, not the segments.
+    std::array<std::vector<Num>, 2> line_offsets_;
+    std::array<std::vector<std::size_t>, 2> line_begins_;
     std::vector<std::vector<Owner>> owners_;  // per segment
     std::vector<std::size_t> transversal_of_; // segment * 4 + direction -> id or npos
     std::vector<std::size_t> segment_of_;     // per transversal
@@ -199,11 +205,14 @@ finish_exchange(const Num& size, const Num& modulus, std::vector<Transversal> tr
 }
 
 // The exchange on integers Num (any of the three, whatever the tables' Int).
+// The transversals, in GMP integers (six a transversal), only `with_transversals`:
+// the induction does not read them, only the public exchange does.
 template <class Num, class Int>
 ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
                                   const shoot::UniformGrid<Int, 2>& grid,
                                   const shoot::PieceTable<Int>& table, const Integer (&x_in)[2],
-                                  unsigned x_negative, const lattice::SetupPoll& poll) {
+                                  unsigned x_negative, const lattice::SetupPoll& poll,
+                                  bool with_transversals = true) {
     using lattice::convert;
     Num x[2];
     for (int j = 0; j < 2; ++j) x[j] = convert<Num>(x_in[j]);
@@ -310,9 +319,10 @@ ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
     }
     const auto first = layout.locate(x, x_negative);
     if (!first) throw std::logic_error("the first reflection state is on no transversal");
-    ExchangeOn<Num> exchange =
-        finish_exchange_on(layout.size(), layout.modulus(), layout.public_transversals(),
-                           std::move(raw), layout.raw(*first), hits, poll);
+    ExchangeOn<Num> exchange = finish_exchange_on(layout.size(), layout.modulus(),
+                                                  with_transversals ? layout.public_transversals()
+                                                                    : std::vector<Transversal>{},
+                                                  std::move(raw), layout.raw(*first), hits, poll);
     exchange.first_transversal = first->first;
     exchange.first_index = first->second;
     for (int j = 0; j < 2; ++j) exchange.scale[j] = scene.scale[j];

@@ -38,10 +38,11 @@ Decision decide_on(const lattice::LatticeScene& scene, const shoot::UniformGrid<
     const auto begin = Clock::now();
     Decision decision;
     // The run has taken reflection 1, so the first shot neither escapes nor
-    // is absorbed: the exchange is there.
+    // is absorbed: the exchange is there. Its transversals only for an
+    // observer, which sees the public exchange.
     const FirstState first = *first_state(scene, grid);
-    const ExchangeOn<Num> exchange =
-        build_exchange_on<Num>(scene, grid, table, first.x, first.negative, poll);
+    const ExchangeOn<Num> exchange = build_exchange_on<Num>(
+        scene, grid, table, first.x, first.negative, poll, options.induction_observer != nullptr);
 
     auto stop = [&](std::uint64_t) {
         if (!options.monitor) return false;

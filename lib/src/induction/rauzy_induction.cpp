@@ -64,6 +64,7 @@ public:
     }
     Link tail() const { return tail_; }
     Link prev(Link p) const { return prev_[p]; }
+    void prefetch_next(Link p) const { __builtin_prefetch(&next_[p], 1); }
 
     void remove(Link p) {
         (prev_[p] == none ? head_ : next_[prev_[p]]) = next_[p];
@@ -186,10 +187,26 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         walked.clear();
         total = 0;
         Link p = top ? r : d;
+        // The walk is a chain of dependent misses; the loads it does not
+        // depend on are issued along it. Each consumed piece's return time
+        // and `next` link are written right after the walk: fetch them now.
+        // And the next step walks the other order back from w (a top run
+        // leaves w last in the domain and the last walked piece last in the
+        // image, so the next step is a bottom one with w among its losers, or
+        // equal; likewise the other way): its first links are followed here,
+        // one a link of this walk, a second chain beside this one. It never
+        // runs off its order: both orders hold the same pieces, w is last in
+        // the other one, and this walk passes at most all of them but w.
+        const Order& winners = top ? domain : image;
+        Link ahead = w;
         while (p != w && total < length[w]) {
             walked.push_back(p);
+            __builtin_prefetch(&piece.ret[p], 1);
+            losers.prefetch_next(p);
             total += length[p];
             p = losers.prev(p);
+            ahead = winners.prev(ahead);
+            __builtin_prefetch(&length[ahead]);
         }
         if (p == w && total < length[w]) {
             // Whole rounds through every loser: floor((l_w - 1) / S) of them
