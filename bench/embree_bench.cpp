@@ -174,6 +174,7 @@ int embree_baseline(const Options& o) {
     int failures = 0;
     for (int dim : {2, 3})
         for (std::int64_t n : sizes) {
+            if (o.dim && dim != o.dim) continue;
             const std::uint64_t seed = 1000 * static_cast<std::uint64_t>(dim) + 1;
             auto make = [&] { return random_box(dim, n, seed); };
             std::fprintf(stderr, "[embree] random %dD n = %lld\n", dim, static_cast<long long>(n));
@@ -237,7 +238,7 @@ int embree_baseline(const Options& o) {
                "leaks", "false hits"});
     for (int dim : {2, 3})
         for (std::int64_t n : sizes) {
-            if (n > 10'000) continue;
+            if (n > 10'000 || (o.dim && dim != o.dim)) continue;
             std::vector<std::uint64_t> off[2], loose[2], wrong[2];
             int leaks[2] = {}, false_hits[2] = {};
             for (int s = 1; s <= seeds; ++s) {

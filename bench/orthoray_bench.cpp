@@ -77,6 +77,8 @@ Options parse(int argc, char** argv) {
                    "also write the tables as CSV (FILE, FILE-billion.csv, "
                    "FILE-disagreement.csv)");
     add_count(app, "--runs", runs, "runs per measurement (default 5)");
+    app.add_option("--dim", o.dim, "the embree part on 2D or 3D scenes only (default both)")
+        ->check(CLI::IsMember({2, 3}));
     add_count(app, "--steps", steps, "reflections per exact and float run (default 3 * 10^7)");
     add_count(app, "--scenes", scenes, "disagreement scenes (default 3000)");
     add_count(app, "--billion", billion, "reflections of the long run (default 10^9)");

@@ -20,6 +20,7 @@ struct Options {
     std::string write_scenes; // a directory to write the benchmark scenes to, as .scene files
     std::string wrong_scene = std::string(ORTHORAY_BENCH_DIR) + "/float-wrong.scene";
     int runs = 5;
+    int dim = 0;                      // the embree part: only 2D or 3D scenes (0: both)
     std::uint64_t steps = 0;          // exact and float steps per run (0: by mode)
     std::uint64_t scenes = 0;         // disagreement scenes (0: by mode)
     std::uint64_t billion = 0;        // steps of the long run (0: by mode)

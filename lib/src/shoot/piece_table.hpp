@@ -106,7 +106,7 @@ public:
     Shot<Int> shoot(const Int (&p)[2], Cursor& where) const {
         const Int& u = p[where.tangent];
         const Hop& hop = hops_[where.begin + locate(where, u)];
-        const auto kind = static_cast<Kind>((hop.bits >> kind_shift) & 3u);
+        const Kind kind = hop.kind();
         Shot<Int> shot;
         shot.escape = kind == Kind::escape;
         shot.absorber = kind == Kind::absorb;
@@ -117,13 +117,13 @@ public:
         return shot;
     }
 
-    // The same, entering at mirror `element`, and naming a mirror met (for
-    // tests and the dump; the engine keeps a cursor instead).
+    // The same, entering at mirror `element`, and naming a mirror met when
+    // the ray reflects (for tests and the dump; the engine keeps a cursor).
     Shot<Int> shoot(const Int (&p)[2], unsigned negative, std::uint32_t element) const {
         Cursor where = at(element, negative);
-        const std::size_t k = where.begin + locate(where, p[where.tangent]);
+        const Hop& hop = hops_[where.begin + locate(where, p[where.tangent])];
         Shot<Int> shot = shoot(p, where);
-        shot.mirror = next_mirror_[k];
+        if (hop.kind() == Kind::reflect) shot.mirror = next_mirror(hop);
         return shot;
     }
 
@@ -180,7 +180,8 @@ public:
 
     // A piece as the dump shows it: on mirror `element` leaving in direction
     // `negative`, the positions from `from` on (to the next row's) go to
-    // mirror `next` (reflect), or nowhere (escape), or stop (absorb), with
+    // mirror `next` (reflect; 0 otherwise), or nowhere (escape), or stop
+    // (absorb), with
     // the hit at t = t0 + slope * (u - from), reflecting on the axes `flip`.
     struct Row {
         std::uint32_t element = 0;
@@ -199,8 +200,10 @@ public:
                 const Cursor c = at(m, d);
                 for (std::uint32_t k = c.begin; k < c.begin + c.count; ++k) {
                     const Piece p = piece(k);
-                    visit(Row{m, d, to_integer(p.from), to_integer(p.t0), p.kind(), next_mirror_[k],
-                              p.slope(), p.flip});
+                    const std::uint32_t next =
+                        p.kind() == Kind::reflect ? next_mirror(hops_[k]) : 0;
+                    visit(Row{m, d, to_integer(p.from), to_integer(p.t0), p.kind(), next, p.slope(),
+                              p.flip});
                 }
             }
     }
@@ -220,6 +223,7 @@ private:
             return {next_begin, next_count,
                     static_cast<std::uint8_t>((bits & next_tangent_bit) ? 1 : 0)};
         }
+        Kind kind() const { return static_cast<Kind>((bits >> kind_shift) & 3u); }
     };
     static constexpr std::uint8_t
         flip_mask = 3,
@@ -233,8 +237,23 @@ private:
     Piece piece(std::size_t k) const {
         const Hop& h = hops_[k];
         return {from_[k], Int(h.base + Int(h.slope) * from_[k]),
-                static_cast<unsigned>(h.bits & flip_mask),
-                static_cast<Kind>((h.bits >> kind_shift) & 3u), h.slope};
+                static_cast<unsigned>(h.bits & flip_mask), h.kind(), h.slope};
+    }
+
+    // The mirror a reflecting hop goes on to (cold: tests and the dump read
+    // it; the build keeps no array of them, 4 bytes a piece). Its cursor
+    // starts that mirror's slot, and slots are laid out by laid_out_ rank and
+    // direction, so their starts ascend in that order: the slot is the last
+    // one starting at or before the cursor (an absorber's slots are empty
+    // and start where the next one does; a mirror's never are).
+    std::uint32_t next_mirror(const Hop& hop) const {
+        auto start_of = [&](std::size_t k) { return slots_[laid_out_[k / 4] * 4 + k % 4].begin; };
+        std::size_t lo = 0, hi = laid_out_.size() * 4; // start_of(lo) <= cursor < start_of(hi)
+        while (hi - lo > 1) {
+            const std::size_t mid = (lo + hi) / 2;
+            (hop.next_begin < start_of(mid) ? hi : lo) = mid;
+        }
+        return laid_out_[lo / 4];
     }
 
     // Positions past the last slot that the fixed-width searches read (and
@@ -295,13 +314,13 @@ private:
         }
     }
 
-    std::size_t count_ = 0;                  // pieces (the arrays also hold long slots' indexes)
-    std::vector<Int> from_;                  // per piece: its first position (+ key_padding)
-    std::vector<Hop> hops_;                  // per piece: what a reflection there does
-    std::vector<std::uint32_t> next_mirror_; // per piece: a mirror met (cold: tests, dump)
-    std::vector<Cursor> slots_;              // (element * 4 + direction) -> its pieces
-    std::vector<std::uint8_t> tangent_;      // the axis a position on the element runs along
-    std::vector<std::uint8_t> acting_;       // LatticeElement::acting, per element
+    std::size_t count_ = 0;               // pieces (the arrays also hold long slots' indexes)
+    std::vector<Int> from_;               // per piece: its first position (+ key_padding)
+    std::vector<Hop> hops_;               // per piece: what a reflection there does
+    std::vector<std::uint32_t> laid_out_; // the elements in the order their slots are laid out
+    std::vector<Cursor> slots_;           // (element * 4 + direction) -> its pieces
+    std::vector<std::uint8_t> tangent_;   // the axis a position on the element runs along
+    std::vector<std::uint8_t> acting_;    // LatticeElement::acting, per element
 
     // From p backwards along direction d: calls visit(q) at each point q
     // where the reverse ray meets some element (of any side), nearest first,

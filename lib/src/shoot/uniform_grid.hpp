@@ -108,6 +108,8 @@ public:
     void for_each_neighbour(std::uint32_t e, Visit&& visit) const;
 
     std::size_t size() const { return items_.size(); }
+    // Element e as the grid holds it: its box in Int, its axis and sides.
+    const ElementBox<Int, M>& element(std::uint32_t e) const { return items_[e]; }
 
     // The Z-order (Morton) index of the cell holding p, clamped to the grid:
     // points with close keys lie in nearby cells, so work sorted by it walks
