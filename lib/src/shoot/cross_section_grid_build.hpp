@@ -179,8 +179,8 @@ void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
     // misses anyway, and the slabs keep long member lists cheap: there a
     // limit of 5 an element cuts the members again (37 MB less peak memory
     // at 10^5 random mirrors) and was faster, while at 10^4 it cost 10%.
-    // A small scene may always take 2^13 registrations (128 KB a
-    // direction): at 10^2 random mirrors the finer grid that allows is
+    // A small scene may always take 2^13 registrations (128 KB a pair of
+    // directions): at 10^2 random mirrors the finer grid that allows is
     // 1.3x faster. The count of a layout is the sum over the elements of
     // the cells their shadow boxes span, one product each.
     const std::size_t per_element = acting.size() > (std::size_t{1} << 15) ? 5 : 10;
