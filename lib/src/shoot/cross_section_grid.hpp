@@ -1,5 +1,5 @@
-// Next-hit queries without walking: a grid on the cross-section of each
-// direction's bundle of parallel lines.
+// Next-hit queries without walking: a grid on the cross-section of the
+// bundle of parallel lines of each pair of opposite directions.
 //
 // On the lattice the ray moves along one of the 2^M diagonal directions
 // sigma in {±1}^M (lattice_scene.hpp). Fix sigma. Every line of direction
@@ -52,10 +52,10 @@
 // sigma_0 = +1, also answers -sigma by a reverse scan of the same cell: from
 // the last member that may lie before p (key < D(p)) down to the first,
 // keeping the largest hit depth below D(p), and stopping at the first
-// member whose largest possible depth, key + h - 1, is below the best hit.
-// Each cell row indexes the slabs twice, once for each scan. Half the
-// bundles hold every registration once instead of twice (at 10^5 mirrors
-// 17 MB instead of 35).
+// member whose largest possible depth, key + h - 1, is below the best hit
+// (with the quantum's upper bound for key, so again exact). Each cell row
+// indexes the slabs twice, once for each scan. Half the bundles hold every
+// registration once instead of twice (at 10^5 mirrors 17 MB instead of 35).
 //
 // One-sided elements cost little at query time: a bundle registers the
 // elements that act on either of its directions (LatticeElement::acting),
