@@ -508,9 +508,10 @@ Answer run_spatial(Run<Int, M, Detector>& run, const LatticeScene& ls,
         break;
     }
     auto begin = std::chrono::steady_clock::now();
-    // Four cells an element to start from: the grid coarsens until its
-    // registrations fit its limits, so this refines only small scenes.
-    const shoot::CrossSectionGrid<Int, M> section(ls, 4, run.setup_poll());
+    // Sixteen cells an element to start from: the grid coarsens until its
+    // registrations fit its limits, so this refines only small scenes
+    // (docs/shooting.md).
+    const shoot::CrossSectionGrid<Int, M> section(ls, 16, run.setup_poll());
     Answer::Stats::Setup& setup = run.answer().stats.setup;
     setup.seconds += seconds_since(begin);
     setup.cells = section.cell_count();

@@ -1,5 +1,5 @@
-// Next-hit queries without walking: a grid on the cross-section of each
-// direction's bundle of parallel lines.
+// Next-hit queries without walking: a grid on the cross-section of the
+// bundle of parallel lines of each pair of opposite directions.
 //
 // On the lattice the ray moves along one of the 2^M diagonal directions
 // sigma in {±1}^M (lattice_scene.hpp). Fix sigma. Every line of direction
@@ -46,9 +46,20 @@
 // on values bounded as in lattice_int.hpp (|a_j| <= 2B, offsets into the
 // grid <= 4B, keys <= 3B).
 //
-// Each direction has its own bundle, so one-sided elements cost nothing at
-// query time: a bundle registers only the elements that act on its
-// direction (LatticeElement::acting), and the others are never seen.
+// Opposite directions sigma and -sigma share one bundle: their lines are
+// the same (a_j does not change when every sigma_j does), and on a line the
+// depth of -sigma is minus that of sigma. So the bundle of sigma, with
+// sigma_0 = +1, also answers -sigma by a reverse scan of the same cell: from
+// the last member that may lie before p (key < D(p)) down to the first,
+// keeping the largest hit depth below D(p), and stopping at the first
+// member whose largest possible depth, key + h - 1, is below the best hit
+// (with the quantum's upper bound for key, so again exact). Each cell row
+// indexes the slabs twice, once for each scan. Half the bundles hold every
+// registration once instead of twice (at 10^5 mirrors 17 MB instead of 35).
+//
+// One-sided elements cost little at query time: a bundle registers the
+// elements that act on either of its directions (LatticeElement::acting),
+// and each member carries one bit a direction, tested beside t > 0.
 //
 // `Counter` (shot_counter.hpp) is told the cell read and each member scanned;
 // the default counts nothing and costs nothing.
@@ -97,7 +108,9 @@ public:
     }
     // The side of a cell of direction `negative`'s cross-section on its
     // axis j (0 .. M-2), in lattice units.
-    Int cell_side(unsigned negative, int j) const { return Int(1) << bundles_[negative].shift[j]; }
+    Int cell_side(unsigned negative, int j) const {
+        return Int(1) << bundles_[bundle_of(negative)].shift[j];
+    }
     // What the shots cost so far (shot_counter.hpp).
     const Counter& counter() const { return counter_; }
     std::size_t cell_count() const {
@@ -121,9 +134,12 @@ private:
     struct Member {
         Int plane;         // the element's plane x_axis = c, as sigma_axis * c
         std::uint32_t key; // quantum of the smallest depth at which a line of the cell can meet it
-        std::uint32_t item_and_axis; // item << 2 | normal axis
+        // item << 4 | acts on -sigma << 3 | acts on sigma << 2 | normal axis
+        std::uint32_t packed;
     };
-    // The lines of one direction: a grid over their cross-section.
+    static constexpr std::uint32_t acts_forward = 4, acts_reverse = 8;
+    // The lines of the directions sigma (sigma_0 = +1) and -sigma: a grid
+    // over their cross-section.
     struct Bundle {
         Int origin[M];           // smallest a_j over all elements
         Int limit[M];            // largest a_j
@@ -136,15 +152,18 @@ private:
         unsigned key_shift = 0;  // a key's quantum is floor((key - base) / 2^key_shift)
         unsigned slab_shift = 0; // slab i holds the depths base + [i, i + 1) 2^slab_shift
         std::size_t slabs = 1;   // slabs a cell row indexes
-        bool empty = true;       // no element acts on this direction
-        // Cell c's row, rows[c * (slabs + 1) ..]: for slab i the first member
-        // not behind the slab's least depth (for slab 0, the cell's first
-        // member), then the cell's end.
+        bool empty = true;       // no element acts on either direction
+        // Cell c's row, rows[c * 2 (slabs + 1) ..]: for sigma's scan, for
+        // slab i the first member not behind the slab's least depth L_i (for
+        // slab 0, the cell's first member), then the cell's end; for -sigma's
+        // scan, for slab i the first member whose key is surely >= L_i (for
+        // slab 0, the cell's first member), then the cell's end.
         std::vector<std::uint32_t> rows;
         std::vector<Member> members; // of each cell, sorted by key
 
-        std::size_t cell_begin(std::size_t c) const { return rows[c * (slabs + 1)]; }
-        std::size_t cell_end(std::size_t c) const { return rows[c * (slabs + 1) + slabs]; }
+        std::size_t width() const { return 2 * (slabs + 1); }
+        std::size_t cell_begin(std::size_t c) const { return rows[c * width()]; }
+        std::size_t cell_end(std::size_t c) const { return rows[c * width() + slabs]; }
         // floor((x - base + 1) / 2^key_shift) clamped to [0, 2^32]: the
         // members whose quantum is below it all have key <= x (the upper
         // bound base + (q + 1) 2^key_shift - 1 of a quantum q is <= x).
@@ -162,283 +181,61 @@ private:
             if (Int(std::int64_t{1} << 32) < q) return std::uint64_t{1} << 32;
             return static_cast<std::uint64_t>(to_index(q));
         }
+        // ceil((x - base) / 2^key_shift) clamped to [0, 2^32]: a member whose
+        // quantum is at least it has key >= x (its lower bound
+        // base + q 2^key_shift is).
+        std::uint64_t quanta_below(const Int& x) const {
+            const Int q = Int(x - base + ((Int(1) << key_shift) - 1)) >> key_shift;
+            if (q < 0) return 0;
+            if (Int(std::int64_t{1} << 32) < q) return std::uint64_t{1} << 32;
+            return static_cast<std::uint64_t>(to_index(q));
+        }
     };
 
     std::vector<Item> items_;
-    std::array<Bundle, (1u << M)> bundles_;
+    // Bundle i serves the direction masks 2i (sigma_0 = +1) and its
+    // opposite 2i ^ (2^M - 1).
+    std::array<Bundle, (1u << S)> bundles_;
     [[no_unique_address]] Counter counter_;
 
+    static constexpr unsigned all_axes = (1u << M) - 1;
+    static unsigned bundle_of(unsigned negative) {
+        return ((negative & 1u) ? negative ^ all_axes : negative) >> 1;
+    }
     static Int sigma(unsigned negative, int j) {
         return Int(1 - 2 * static_cast<int>((negative >> j) & 1u));
     }
+
+    // The scans of a cell for sigma (depth grows along the ray) and for
+    // -sigma (it falls); `sp` holds sigma_j p_j, `s` sigma.
+    Shot<Int> scan_forward(const Bundle& bundle, const std::uint32_t* row, std::size_t slab,
+                           const Int& depth, const Int (&p)[M], const Int (&s)[M],
+                           const Int (&sp)[M]) const;
+    Shot<Int> scan_reverse(const Bundle& bundle, const std::uint32_t* row, std::size_t slab,
+                           const Int& depth, const Int (&p)[M], const Int (&s)[M],
+                           const Int (&sp)[M]) const;
 
     void build(Bundle& bundle, unsigned negative, std::int64_t cells_per_element,
                const lattice::SetupPoll& poll);
 };
 
 template <class Int, int M, class Counter>
-CrossSectionGrid<Int, M, Counter>::CrossSectionGrid(const LatticeScene& scene,
-                                                    std::int64_t cells_per_element,
-                                                    const lattice::SetupPoll& poll) {
-    // A member names its element in 30 bits (Member::item_and_axis); a scene
-    // of 2^30 elements would not fit in memory anyway.
-    if (scene.elements.size() >= (std::size_t{1} << 30)) throw std::bad_alloc();
-    items_.reserve(scene.elements.size());
-    for (const LatticeElement& e : scene.elements) {
-        poll();
-        items_.emplace_back(e, static_cast<std::uint32_t>(items_.size()));
-    }
-    // Elements in Z-order of their low corners: a cell's members, and the
-    // ray's successive hits, are spatial neighbours, so they then share cache
-    // lines instead of being scattered over the scene's declaration order.
-    if (!items_.empty()) {
-        constexpr int bits = 64 / M;
-        Integer lo[M], extent[M];
-        for (int j = 0; j < M; ++j) {
-            lo[j] = scene.elements[0].lo[j];
-            Integer hi = scene.elements[0].hi[j];
-            for (const LatticeElement& e : scene.elements) {
-                if (e.lo[j] < lo[j]) lo[j] = e.lo[j];
-                if (hi < e.hi[j]) hi = e.hi[j];
-            }
-            extent[j] = hi - lo[j] + 1;
-        }
-        std::vector<std::pair<std::uint64_t, std::uint32_t>> order(items_.size());
-        for (std::uint32_t e = 0; e < items_.size(); ++e) {
-            poll();
-            std::uint64_t key = 0;
-            for (int j = 0; j < M; ++j) {
-                // floor((lo - min) * 2^bits / extent) < 2^bits, exactly.
-                const Integer q = ((scene.elements[e].lo[j] - lo[j]) << bits) / extent[j];
-                const std::uint64_t i = q.get_ui();
-                for (int bit = 0; bit < bits; ++bit) key |= ((i >> bit) & 1u) << (bit * M + j);
-            }
-            order[e] = {key, e};
-        }
-        std::sort(order.begin(), order.end());
-        std::vector<Item> sorted;
-        sorted.reserve(items_.size());
-        for (const auto& [key, e] : order) sorted.push_back(std::move(items_[e]));
-        items_ = std::move(sorted);
-    }
-    for (unsigned negative = 0; negative < bundles_.size(); ++negative)
-        build(bundles_[negative], negative, cells_per_element, poll);
-}
-
-template <class Int, int M, class Counter>
-void CrossSectionGrid<Int, M, Counter>::build(Bundle& bundle, unsigned negative,
-                                              std::int64_t cells_per_element,
-                                              const lattice::SetupPoll& poll) {
-    bundle.rows.assign(2, 0);
-    bundle.cell_total = 1;
-    // The elements this direction's rays can meet: those acting on it.
-    std::vector<std::uint32_t> acting;
-    for (std::uint32_t e = 0; e < items_.size(); ++e)
-        if (items_[e].acts_on(negative)) acting.push_back(e);
-    if (acting.empty()) return;
-    bundle.empty = false;
-    const Int s0 = sigma(negative, 0);
-    // The shadow of an element on the cross-section: a_j = x_j - r_j x_0 with
-    // r_j = sigma_j sigma_0, over the element's box; its bounding box is
-    // [lo_j - max(r_j x_0), hi_j - min(r_j x_0)].
-    auto shadow = [&](const Item& it, int j, Int& lo, Int& hi) {
-        const Int r = sigma(negative, j) * s0;
-        const Int x_lo = r * it.lo[0], x_hi = r * it.hi[0];
-        lo = it.lo[j] - (x_lo < x_hi ? x_hi : x_lo);
-        hi = it.hi[j] - (x_lo < x_hi ? x_lo : x_hi);
-    };
-    for (int j = 0; j < S; ++j)
-        for (std::size_t k = 0; k < acting.size(); ++k) {
-            poll();
-            Int lo, hi;
-            shadow(items_[acting[k]], j + 1, lo, hi);
-            if (k == 0 || lo < bundle.origin[j]) bundle.origin[j] = lo;
-            if (k == 0 || bundle.limit[j] < hi) bundle.limit[j] = hi;
-        }
-    // k cells a side with k^S >= cells_per_element * n; each side a power of two.
-    std::int64_t k = 1;
-    const std::int64_t want = cells_per_element * static_cast<std::int64_t>(acting.size());
-    while (true) {
-        std::int64_t p = 1;
-        for (int j = 0; j < S; ++j) p *= k;
-        if (p >= want || S == 0) break;
-        ++k;
-    }
-    std::int64_t total = 1;
-    auto lay_out = [&] {
-        total = 1;
-        bundle.reach = 0;
-        for (int j = 0; j < S; ++j) {
-            const Int points = bundle.limit[j] - bundle.origin[j] + 1;
-            // The least shift with k 2^shift >= points. Below bits(points) -
-            // bits(k) it is too small (k 2^shift < 2^(bits(points) - 1)), so
-            // the search starts there: one or two rounds, where counting up
-            // from 0 took one round a bit, each on a number of that many
-            // bits (minutes at 10^6 digits).
-            const unsigned points_bits = lattice::bit_length(points);
-            const unsigned k_bits = lattice::bit_length(Int(k));
-            unsigned shift = points_bits > k_bits ? points_bits - k_bits : 0;
-            while (Int(Int(k) << shift) < points) ++shift;
-            bundle.shift[j] = shift;
-            bundle.cells[j] = to_index(Int(Int(points - 1) >> shift)) + 1;
-            total *= bundle.cells[j];
-            if (bundle.reach < Int(Int(1) << shift) - 1) bundle.reach = Int(Int(1) << shift) - 1;
-        }
-    };
-    lay_out();
-
-    // Every cell an element's shadow box covers, with the element's smallest
-    // possible depth there.
-    auto for_each_cell = [&](std::uint32_t e, auto&& visit) {
-        poll();
-        const Item& it = items_[e];
-        std::int64_t first[M], last[M], i[M];
-        for (int j = 0; j < S; ++j) {
-            Int lo, hi;
-            shadow(it, j + 1, lo, hi);
-            first[j] = to_index(Int(Int(lo - bundle.origin[j]) >> bundle.shift[j]));
-            last[j] = to_index(Int(Int(hi - bundle.origin[j]) >> bundle.shift[j]));
-            i[j] = first[j];
-        }
-        // The element's own depth range, sigma_0 * x_0 over its box.
-        const Int d_lo = s0 * it.lo[0] < s0 * it.hi[0] ? Int(s0 * it.lo[0]) : Int(s0 * it.hi[0]);
-        const int a = it.axis;
-        while (true) {
-            std::int64_t c = 0;
-            for (int j = S - 1; j >= 0; --j) c = c * bundle.cells[j] + i[j];
-            Int key = d_lo;
-            if constexpr (S > 0)
-                if (a != 0) {
-                    // Depth sigma_a (c - a_a), over the cell's a_a in [A, A + h - 1].
-                    const Int cell_lo =
-                        bundle.origin[a - 1] + (Int(i[a - 1]) << bundle.shift[a - 1]);
-                    const Int cell_hi = cell_lo + (Int(1) << bundle.shift[a - 1]) - 1;
-                    const Int sa = sigma(negative, a);
-                    const Int d1 = sa * Int(it.lo[a] - cell_lo), d2 = sa * Int(it.lo[a] - cell_hi);
-                    const Int d = d1 < d2 ? d1 : d2;
-                    if (key < d) key = d;
-                }
-            visit(c, key);
-            int j = 0;
-            while (j < S && i[j] == last[j]) i[j] = first[j], ++j;
-            if (j >= S) break;
-            ++i[j];
-        }
-    };
-    // The depths of the elements: keys lie in [base, far - 1].
-    for (std::size_t n = 0; n < acting.size(); ++n) {
-        poll();
-        const Item& it = items_[acting[n]];
-        const Int x_lo = s0 * it.lo[0], x_hi = s0 * it.hi[0];
-        const Int d_lo = x_lo < x_hi ? x_lo : x_hi, d_hi = x_lo < x_hi ? x_hi : x_lo;
-        if (n == 0 || d_lo < bundle.base) bundle.base = d_lo;
-        if (n == 0 || bundle.far < d_hi) bundle.far = d_hi;
-    }
-    bundle.far += 1;
-    const unsigned depth_bits = lattice::bit_length(Int(bundle.far - bundle.base));
-    bundle.key_shift = depth_bits > 32 ? depth_bits - 32 : 0;
-    // Registrations grow with the elements' shadows measured in cells. When
-    // they pass 10 an element, fewer, larger cells (a quarter as many in 3D)
-    // hold the same lines in far less memory: at 10^5 random mirrors this
-    // cut the members from 10.8M to 4.3M at equal speed, while up to 10^4
-    // the finer grid stays under the limit and is faster (docs/shooting.md).
-    // Past 2^15 elements the members no longer fit in any cache, a shot
-    // misses anyway, and the slabs keep long member lists cheap: there a
-    // limit of 5 an element cuts the members again (37 MB less peak memory
-    // at 10^5 random mirrors) and was faster, while at 10^4 it cost 10%.
-    // A small scene may always take 2^13 registrations (128 KB a
-    // direction): at 10^2 random mirrors the finer grid that allows is
-    // 1.3x faster. The count of a layout is the sum over the elements of
-    // the cells their shadow boxes span, one product each.
-    const std::size_t per_element = acting.size() > (std::size_t{1} << 15) ? 5 : 10;
-    const std::size_t allowed = std::max(per_element * acting.size(), std::size_t{1} << 13);
-    auto registrations = [&] {
-        std::size_t sum = 0;
-        for (const std::uint32_t e : acting) {
-            poll();
-            std::size_t spanned = 1;
-            for (int j = 0; j < S; ++j) {
-                Int lo, hi;
-                shadow(items_[e], j + 1, lo, hi);
-                const std::int64_t first =
-                    to_index(Int(Int(lo - bundle.origin[j]) >> bundle.shift[j]));
-                const std::int64_t last =
-                    to_index(Int(Int(hi - bundle.origin[j]) >> bundle.shift[j]));
-                spanned *= static_cast<std::size_t>(last - first + 1);
-            }
-            sum += spanned;
-        }
-        return sum;
-    };
-    while (registrations() > allowed && k > 1) {
-        k /= 2;
-        lay_out();
-    }
-    std::vector<std::uint32_t> offsets(static_cast<std::size_t>(total) + 1, 0);
-    for (const std::uint32_t e : acting)
-        for_each_cell(e, [&](std::int64_t c, const Int&) { ++offsets[c + 1]; });
-    for (std::size_t c = 1; c < offsets.size(); ++c) offsets[c] += offsets[c - 1];
-    bundle.members.resize(offsets.back());
-    bundle.cell_total = static_cast<std::size_t>(total);
-    {
-        std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
-        for (const std::uint32_t e : acting)
-            for_each_cell(e, [&](std::int64_t c, const Int& key) {
-                const Item& it = items_[e];
-                bundle.members[fill[c]++] =
-                    Member{Int(sigma(negative, it.axis) * it.lo[it.axis]),
-                           static_cast<std::uint32_t>(bundle.quantum_of(key)), e << 2 | it.axis};
-            });
-    }
-    // Ties broken by the element, so that the order does not depend on the sort.
-    for (std::size_t c = 0; c + 1 < offsets.size(); ++c)
-        std::sort(bundle.members.begin() + offsets[c], bundle.members.begin() + offsets[c + 1],
-                  [](const Member& x, const Member& y) {
-                      return x.key < y.key || (x.key == y.key && x.item_and_axis < y.item_and_axis);
-                  });
-    // About members_per_slab members a slab on average, at most max_slabs.
-    const std::size_t per_cell = bundle.members.size() / bundle.cell_total;
-    unsigned slab_bits = 0;
-    while ((std::size_t{members_per_slab} << slab_bits) < per_cell && slab_bits < max_slab_bits)
-        ++slab_bits;
-    bundle.slabs = std::size_t{1} << slab_bits;
-    bundle.slab_shift = depth_bits > slab_bits ? depth_bits - slab_bits : 0;
-    const std::size_t width = bundle.slabs + 1;
-    bundle.rows.assign(bundle.cell_total * width, 0);
-    for (std::size_t c = 0; c < bundle.cell_total; ++c) {
-        poll();
-        std::uint32_t first = offsets[c];
-        const std::uint32_t end = offsets[c + 1];
-        bundle.rows[c * width] = first;
-        for (std::size_t slab = 1; slab < bundle.slabs; ++slab) {
-            // Behind every point of the slab: key + reach <= its least depth.
-            const Int least =
-                bundle.base + (Int(static_cast<std::int64_t>(slab)) << bundle.slab_shift);
-            const std::uint64_t behind = bundle.quanta_at_most(Int(least - bundle.reach));
-            while (first != end && bundle.members[first].key < behind) ++first;
-            bundle.rows[c * width + slab] = first;
-        }
-        bundle.rows[c * width + bundle.slabs] = end;
-    }
-}
-
-template <class Int, int M, class Counter>
 Shot<Int> CrossSectionGrid<Int, M, Counter>::shoot(const Int (&p)[M], unsigned negative) const {
-    Shot<Int> shot;
-    const Bundle& bundle = bundles_[negative];
-    if (bundle.empty) return shot;
+    const Bundle& bundle = bundles_[bundle_of(negative)];
+    if (bundle.empty) return {};
+    // sigma of the bundle (sigma_0 = +1): the ray's direction or its opposite.
+    const unsigned forward = (negative & 1u) ? negative ^ all_axes : negative;
     Int s[M];
-    for (int j = 0; j < M; ++j) s[j] = sigma(negative, j);
+    for (int j = 0; j < M; ++j) s[j] = sigma(forward, j);
     std::int64_t c = 0;
     for (int j = S - 1; j >= 0; --j) {
-        const Int a = p[j + 1] - s[j + 1] * s[0] * p[0];
+        const Int a = p[j + 1] - s[j + 1] * p[0];
         // A line outside every shadow meets nothing.
-        if (a < bundle.origin[j] || bundle.limit[j] < a) return shot;
+        if (a < bundle.origin[j] || bundle.limit[j] < a) return {};
         c = c * bundle.cells[j] + to_index(Int(Int(a - bundle.origin[j]) >> bundle.shift[j]));
     }
     counter_.cell();
-    const Int depth = s[0] * p[0];
-    // Start at the depth's slab, whose earlier members lie behind p.
+    const Int& depth = p[0];
     std::size_t slab = 0;
     if (bundle.base < depth) {
         const Int i = Int(depth - bundle.base) >> bundle.slab_shift;
@@ -446,7 +243,23 @@ Shot<Int> CrossSectionGrid<Int, M, Counter>::shoot(const Int (&p)[M], unsigned n
                    ? static_cast<std::size_t>(to_index(i))
                    : bundle.slabs - 1;
     }
-    const std::uint32_t* row = bundle.rows.data() + c * (bundle.slabs + 1);
+    // t = sigma_a (c - p_a) = plane - sigma_a p_a along sigma, and minus
+    // that along -sigma.
+    Int sp[M];
+    for (int j = 0; j < M; ++j) sp[j] = s[j] * p[j];
+    const std::uint32_t* row = bundle.rows.data() + static_cast<std::size_t>(c) * bundle.width();
+    if (negative & 1u) return scan_reverse(bundle, row + bundle.slabs + 1, slab, depth, p, s, sp);
+    return scan_forward(bundle, row, slab, depth, p, s, sp);
+}
+
+template <class Int, int M, class Counter>
+Shot<Int> CrossSectionGrid<Int, M, Counter>::scan_forward(const Bundle& bundle,
+                                                          const std::uint32_t* row,
+                                                          std::size_t slab, const Int& depth,
+                                                          const Int (&p)[M], const Int (&s)[M],
+                                                          const Int (&sp)[M]) const {
+    Shot<Int> shot;
+    // Start at the depth's slab, whose earlier members lie behind p.
     const Member* first = bundle.members.data() + row[slab];
     const Member* last = bundle.members.data() + row[bundle.slabs];
     // Members whose every depth in the cell is <= depth lie behind p; all of
@@ -458,19 +271,16 @@ Shot<Int> CrossSectionGrid<Int, M, Counter>::shoot(const Int (&p)[M], unsigned n
     std::ptrdiff_t skip = 0;
     for (const Member* m = first; m != slab_end; ++m) skip += m->key < behind;
     first += skip;
-    // t = sigma_a (c - p_a) = plane - sigma_a p_a.
-    Int sp[M];
-    for (int j = 0; j < M; ++j) sp[j] = s[j] * p[j];
     // The best hit's depth; until one is found, past every member's depth.
     Int best = bundle.far;
     std::uint64_t beyond = bundle.quantum_of(best);
     for (; first != last && !(beyond < first->key); ++first) {
         counter_.member();
-        const int a = static_cast<int>(first->item_and_axis & 3u);
+        const int a = static_cast<int>(first->packed & 3u);
         const Int t = first->plane - sp[a];
-        if (t <= 0 || best < Int(depth + t)) continue;
+        if (t <= 0 || best < Int(depth + t) || !(first->packed & acts_forward)) continue;
         counter_.box_test();
-        const Item& it = items_[first->item_and_axis >> 2];
+        const Item& it = items_[first->packed >> 4];
         if (it.holds(p, s, t)) {
             shot.record(t, a, it.absorber, it.index);
             best = depth + shot.t;
@@ -480,4 +290,52 @@ Shot<Int> CrossSectionGrid<Int, M, Counter>::shoot(const Int (&p)[M], unsigned n
     return shot;
 }
 
+template <class Int, int M, class Counter>
+Shot<Int> CrossSectionGrid<Int, M, Counter>::scan_reverse(const Bundle& bundle,
+                                                          const std::uint32_t* row,
+                                                          std::size_t slab, const Int& depth,
+                                                          const Int (&p)[M], const Int (&s)[M],
+                                                          const Int (&sp)[M]) const {
+    Shot<Int> shot;
+    Int r[M]; // -sigma, the ray's direction
+    for (int j = 0; j < M; ++j) r[j] = -s[j];
+    // Along -sigma a hit lies at a depth below p's. Members whose key is
+    // surely >= depth lie at or behind p; those from the slab's start on
+    // have key >= L_slab, and from the next slab's start on key >= L_(slab + 1)
+    // > depth, so counting the ones below depth over this slab's members
+    // finds where the scan starts (one past its first member).
+    const Member* begin = bundle.members.data() + row[0];
+    const Member* first = bundle.members.data() + row[slab];
+    const std::uint64_t below = bundle.quanta_below(depth);
+    const Member* slab_end = bundle.members.data() + row[slab + 1];
+    std::ptrdiff_t ahead = 0;
+    for (const Member* m = first; m != slab_end; ++m) ahead += m->key < below;
+    first += ahead;
+    // The best hit's depth (the largest below p's); until one is found,
+    // below every member's, so that nothing stops the scan. A member whose
+    // every depth, key + h - 1 <= key + reach, is below the best cannot meet
+    // the ray there: the scan stops at the first one whose quantum says so.
+    Int best = bundle.base - 1;
+    std::uint64_t short_of = 0;
+    while (first != begin) {
+        --first;
+        if (first->key < short_of) break;
+        counter_.member();
+        const int a = static_cast<int>(first->packed & 3u);
+        const Int t = sp[a] - first->plane;
+        if (t <= 0 || Int(depth - t) < best || !(first->packed & acts_reverse)) continue;
+        counter_.box_test();
+        const Item& it = items_[first->packed >> 4];
+        if (it.holds(p, r, t)) {
+            shot.record(t, a, it.absorber, it.index);
+            best = depth - shot.t;
+            short_of = bundle.quanta_at_most(Int(best - bundle.reach - 1));
+        }
+    }
+    return shot;
+}
+
 } // namespace orthoray::shoot
+
+// The constructor and the layout of the bundles.
+#include "shoot/cross_section_grid_build.hpp"
