@@ -7,7 +7,7 @@
 #pragma once
 
 #include "engine/cycle_detector.hpp"
-#include "engine/poll_pacer.hpp"
+#include "engine/tail_search.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/lattice_scene.hpp"
 #include "lattice/setup_poll.hpp"
@@ -179,12 +179,10 @@ private:
     std::uint32_t first_mirror_ = no_mirror;
     std::optional<std::uint64_t> period_;
 
-    // mu of docs/optics.md: the least i >= 1 with s_i = s_(i + lambda). Two
-    // walkers, s_i and s_(i + lambda), step side by side from i = 1 (the
-    // second pass of Brent's method) with their own copies of `shoot`; O(1)
-    // states. The cycle is known, so no walker escapes or stops, and there
-    // are fewer than 2 r steps (r: the reflections taken, >= mu + lambda).
-    // The monitor is polled between chunks of about 10 ms, as in stepping.
+    // The tail of a cycle of a one-sided scene (tail_search.hpp): two
+    // walkers from the state after reflection 1, each with its own copy of
+    // `shoot`. They take fewer than 2 r steps (r: the reflections taken,
+    // >= mu + lambda).
     template <class Shoot>
     void tail_pass(const Shoot& fresh, std::uint64_t lambda) {
         struct Walker {
@@ -197,33 +195,18 @@ private:
                 s.negative ^= shot.flip;
                 mirror = shot.mirror;
             }
+            bool operator==(const Walker& o) const { return s == o.s; }
         };
-        Walker behind{first_, first_mirror_, fresh}, ahead = behind;
-        PollPacer pacer;
-        // One pair of steps (or one step of `ahead` while it runs ahead);
-        // false when the monitor stopped the run.
-        auto paced = [&] {
-            if (!options_.monitor || !pacer.due()) return true;
-            if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
-                answer_.limit = *limit;
-                finish(Reason::limit);
-                return false;
-            }
-            return true;
-        };
-        for (std::uint64_t i = 0; i < lambda; ++i) {
-            ahead.step();
-            if (!paced()) return;
+        Walker behind{first_, first_mirror_, fresh};
+        const TailSearch found = search_tail(
+            behind, lambda, [](Walker& w) { w.step(); }, options_.monitor, reflections_);
+        if (found.limit) {
+            answer_.limit = *found.limit;
+            finish(Reason::limit);
+            return;
         }
-        std::uint64_t mu = 1;
-        while (!(behind.s == ahead.s)) {
-            behind.step();
-            ahead.step();
-            ++mu;
-            if (!paced()) return;
-        }
-        answer_.tail = Integer(static_cast<unsigned long>(mu - 1));
-        reflections_ = mu - 1 + lambda;
+        answer_.tail = Integer(static_cast<unsigned long>(found.mu - 1));
+        reflections_ = found.mu - 1 + lambda;
         finish(Reason::cycle);
         if (options_.path) {
             lattice::Coords c;

@@ -12,7 +12,7 @@
 #include "engine/octagonal_engine.hpp"
 
 #include "engine/cycle_detector.hpp"
-#include "engine/poll_pacer.hpp"
+#include "engine/tail_search.hpp"
 #include "lattice/lattice_int.hpp"
 #include "lattice/octagonal_lattice.hpp"
 #include "shoot/octagonal_bvh.hpp"
@@ -145,38 +145,19 @@ private:
         return false;
     }
 
-    // mu of docs/optics.md: the least i >= 1 with s_i = s_(i + lambda), by
-    // walking s_i and s_(i + lambda) side by side from i = 1 (Brent's second
-    // pass). The monitor is polled between chunks of about 10 ms, sized as
-    // the stepping's are.
+    // The tail of the cycle (tail_search.hpp), from the state after
+    // reflection 1.
     void tail_pass(std::uint64_t lambda) {
-        State<Int> behind = first_, ahead = first_;
+        State<Int> behind = first_;
         auto step = [&](State<Int>& s) { s = *next(s, shooter_.shoot(s.p, s.d)); };
-        PollPacer pacer;
-        // One pair of steps (or one step of `ahead` while it runs ahead);
-        // false when the monitor stopped the run.
-        auto paced = [&] {
-            if (!options_.monitor || !pacer.due()) return true;
-            if (const std::optional<Limit> limit = options_.monitor->poll(reflections_)) {
-                answer_.limit = *limit;
-                finish(Reason::limit);
-                return false;
-            }
-            return true;
-        };
-        for (std::uint64_t i = 0; i < lambda; ++i) {
-            step(ahead);
-            if (!paced()) return;
+        const TailSearch found = search_tail(behind, lambda, step, options_.monitor, reflections_);
+        if (found.limit) {
+            answer_.limit = *found.limit;
+            finish(Reason::limit);
+            return;
         }
-        std::uint64_t mu = 1;
-        while (!(behind == ahead)) {
-            step(behind);
-            step(ahead);
-            ++mu;
-            if (!paced()) return;
-        }
-        answer_.tail = Integer(static_cast<unsigned long>(mu - 1));
-        reflections_ = mu - 1 + lambda;
+        answer_.tail = Integer(static_cast<unsigned long>(found.mu - 1));
+        reflections_ = found.mu - 1 + lambda;
         finish(Reason::cycle);
         if (options_.path) {
             lattice::Coords c;
