@@ -290,3 +290,38 @@ TEST_CASE("rho-cycle certificates: each point the next acting event, the cycle's
     CHECK(checked > test::case_count(300) / 15);
     CHECK(with_tail > test::case_count(300) / 60);
 }
+
+TEST_CASE("a stop while the tail is searched ends the run as a limit",
+          "[optics][lattice][limits]") {
+    // The tail pass (engine/tail_search.hpp) runs after Brent's detector
+    // has found the period and polls the monitor from its first step, so it
+    // makes a run's last poll; stopped there, the run must report the limit,
+    // not the cycle. The lattice engine (on the grid), and the octagonal
+    // one (on its hierarchy: a diagonal far off the channel brings it in,
+    // and the answer is the same).
+    struct StopAtPoll : RunMonitor {
+        std::uint64_t stop_at = 0, polls = 0;
+        std::optional<Limit> poll(std::uint64_t) override {
+            return ++polls == stop_at ? std::optional<Limit>(Limit::interrupt) : std::nullopt;
+        }
+    };
+    Scene lattice_scene = read_scene(channel(3000, 1000, 2));
+    Scene octagonal_scene = lattice_scene;
+    octagonal_scene.add_diagonal(ElementKind::mirror, 5000, 5000, 5001, 5001);
+    for (const Scene* s : {&lattice_scene, &octagonal_scene}) {
+        StopAtPoll counting;
+        SolveOptions options;
+        options.monitor = &counting;
+        const Answer whole = solve(*s, options);
+        CHECK(whole.shooter == (s == &lattice_scene ? ShooterUsed::grid : ShooterUsed::bvh));
+        CHECK(whole.reason == Reason::cycle);
+        CHECK(whole.tail == 999);
+        StopAtPoll last;
+        last.stop_at = counting.polls;
+        options.monitor = &last;
+        const Answer stopped = solve(*s, options);
+        CHECK(stopped.reason == Reason::limit);
+        CHECK(stopped.limit == Limit::interrupt);
+        CHECK(stopped.tail == 0);
+    }
+}
