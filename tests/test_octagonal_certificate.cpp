@@ -27,27 +27,11 @@ using orthoray::test::Outcome;
 
 namespace {
 
+using test::Certified;
+using test::certify;
 using test::diamond;
 using test::shoot;
 using test::triangle;
-
-struct Certified {
-    Answer answer;
-    std::string text;
-};
-
-Certified certify(const Scene& scene, Engine engine, CertificateFormat format) {
-    std::stringstream out;
-    CertificateWriter writer(out, scene, format);
-    SolveOptions o;
-    o.engine = engine;
-    writer.attach(o);
-    Certified c;
-    c.answer = solve(scene, o);
-    writer.finish(c.answer);
-    c.text = out.str();
-    return c;
-}
 
 std::string expected_message(const Answer& a) {
     return std::string("valid: ") + to_string(a.reason) + ", " + a.reflections.get_str() +

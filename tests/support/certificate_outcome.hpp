@@ -58,9 +58,10 @@ struct Certified {
 };
 
 // Solves with a CertificateWriter attached and returns the whole text.
-inline Certified certify(const Scene& scene, SolveOptions options) {
+inline Certified certify(const Scene& scene, SolveOptions options,
+                         CertificateFormat format = CertificateFormat::text) {
     std::stringstream out;
-    CertificateWriter writer(out, scene);
+    CertificateWriter writer(out, scene, format);
     writer.attach(options);
     Certified result;
     result.answer = solve(scene, options);
@@ -69,10 +70,11 @@ inline Certified certify(const Scene& scene, SolveOptions options) {
     return result;
 }
 
-inline Certified certify(const Scene& scene, Engine engine) {
+inline Certified certify(const Scene& scene, Engine engine,
+                         CertificateFormat format = CertificateFormat::text) {
     SolveOptions options;
     options.engine = engine;
-    return certify(scene, options);
+    return certify(scene, options, format);
 }
 
 inline bool starts_with(const std::string& text, const std::string& prefix) {
