@@ -141,9 +141,12 @@ public:
         Int x = p[0], y = p[1];
         unsigned neg = negative;
         Cursor at = where;
+        // The position the search needs is chosen when the hop is at hand,
+        // not from the cursor at the next step: the compiler kept the
+        // cursor's axis in memory, a store and a load more on the chain.
+        Int u = at.tangent ? y : x;
         std::uint64_t taken = 0;
         for (; taken < limit; ++taken) {
-            const Int& u = at.tangent ? y : x;
             const Hop& hop = hops_[at.begin + locate(at, u)];
             if (hop.bits & stop_bit) break;
             const Int t = hop.base + Int(hop.slope) * u;
@@ -155,6 +158,7 @@ public:
             y = ny;
             neg = nneg;
             at = hop.next();
+            u = (hop.bits & next_tangent_bit) ? y : x;
             // The next hop is in this line or the next (a short slot is at
             // most 128 bytes of hops): fetched while its positions are
             // searched, not after.
