@@ -137,6 +137,9 @@ ExchangeLayout<Num>::ExchangeLayout(const lattice::LatticeScene& scene, const Nu
 
     // Transversals: every segment in every direction, if its class is not empty.
     transversal_of_.assign(segments_.size() * 4, npos);
+    // At most four a segment; reserving them does not touch the memory.
+    transversals_.reserve(segments_.size() * 4);
+    segment_of_.reserve(segments_.size() * 4);
     size_ = 0;
     for (std::size_t s = 0; s < segments_.size(); ++s) {
         const Segment& segment = segments_[s];
@@ -201,6 +204,18 @@ std::optional<std::pair<std::size_t, Num>> ExchangeLayout<Num>::locate(const Num
 }
 
 template <class Num>
+std::optional<std::pair<std::size_t, Num>>
+ExchangeLayout<Num>::locate(const Num (&p)[2], unsigned negative, std::size_t near) const {
+    const TransversalOn<Num>& t = transversals_[near];
+    const Num& u = p[1 - t.axis];
+    if (t.negative != negative || p[t.axis] != t.offset || u < t.lo || u > t.hi)
+        return locate(p, negative);
+    if (modulus_ == 0 ? u != t.first : floor_mod(Num(u - t.first), modulus_) != 0)
+        return std::nullopt;
+    return std::make_pair(near, number_of(t, modulus_, u));
+}
+
+template <class Num>
 std::vector<Transversal> ExchangeLayout<Num>::public_transversals() const {
     std::vector<Transversal> out;
     out.reserve(transversals_.size());
@@ -243,12 +258,14 @@ finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal>
     // Close the holes: escaping and absorbed pieces, in domain order, onto
     // the states no piece maps to, in order.
     std::vector<std::pair<Num, Num>> images; // (start, length) of the reflecting ones
+    images.reserve(pieces.size());           // reserving does not touch the memory
     for (const Piece& p : pieces) {
         poll(); // copies: on 10^5-digit numbers, much fresh memory
         if (p.kind == PieceKind::reflect) images.emplace_back(p.image, p.length);
     }
     std::sort(images.begin(), images.end());
     std::vector<std::pair<Num, Num>> holes;
+    holes.reserve(images.size() + 1);
     at = 0;
     for (const auto& [start, length] : images) {
         poll();
@@ -257,16 +274,16 @@ finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal>
         at = start + length;
     }
     if (at < n) holes.emplace_back(at, Num(n - at));
-    std::vector<Piece> closed;
-    closed.reserve(pieces.size() + holes.size());
+    images = {};
+    // The dead pieces' parts, one a hole they meet, in order.
+    std::vector<Piece> parts;
+    std::size_t dead = 0;
     std::size_t hole = 0;
     Num used = 0; // of the current hole
-    for (Piece& p : pieces) {
+    for (const Piece& p : pieces) {
         poll();
-        if (p.kind == PieceKind::reflect) {
-            closed.push_back(std::move(p));
-            continue;
-        }
+        if (p.kind == PieceKind::reflect) continue;
+        ++dead;
         Num start = p.start, left = p.length;
         while (left > 0) {
             if (hole == holes.size()) throw std::logic_error("more dead states than holes");
@@ -282,35 +299,59 @@ finish_exchange_on(const Num& size, const Num& modulus, std::vector<Transversal>
                 ++hole;
                 used = 0;
             }
-            closed.push_back(std::move(part));
+            parts.push_back(std::move(part));
+        }
+    }
+    // Each dead piece replaced by its parts, in place: the pieces move up
+    // from the end, so none is overwritten before it is moved, and no
+    // second array of pieces is touched. (One more slot for the piece whose
+    // image wraps around, below.)
+    std::vector<Piece> closed = std::move(pieces);
+    const std::size_t before = closed.size();
+    closed.reserve(before + parts.size() - dead + 1);
+    closed.resize(before + parts.size() - dead);
+    std::size_t to = closed.size();
+    for (std::size_t from = before; from-- > 0;) {
+        if (closed[from].kind == PieceKind::reflect) {
+            if (--to != from) closed[to] = std::move(closed[from]);
+            continue;
+        }
+        const Num start = closed[from].start;
+        while (!parts.empty() && parts.back().start >= start) {
+            closed[--to] = std::move(parts.back());
+            parts.pop_back();
         }
     }
 
     // Rotate so that x is 0: the pieces in domain order from x's on, then
-    // those before it (no sort needed); an image that wraps around is cut
-    // in two.
-    ExchangeOn<Num> exchange;
-    exchange.pieces.reserve(closed.size() + 1);
+    // those before it (no sort needed), renumbered in place. The images tile
+    // the states once, so at most one of them wraps around: it is cut in
+    // two, its second part inserted after it.
     const auto first = std::find_if(closed.begin(), closed.end(),
                                     [&](const Piece& p) { return p.start == raw_first; });
     std::rotate(closed.begin(), first, closed.end());
-    for (Piece& p : closed) {
+    std::optional<std::pair<std::size_t, Piece>> wrapped;
+    for (std::size_t i = 0; i < closed.size(); ++i) {
         poll();
-        Piece q = std::move(p);
+        Piece& q = closed[i];
         q.start = floor_mod(Num(q.start - raw_first), n);
         q.image = floor_mod(Num(q.image - raw_first), n);
-        std::optional<Piece> rest;
         if (q.image + q.length > n) {
-            rest = q;
+            if (wrapped) throw std::logic_error("two images wrap around");
+            Piece rest = q;
             const Num head = n - q.image;
-            rest->start += head;
-            rest->length -= head;
-            rest->image = 0;
+            rest.start += head;
+            rest.length -= head;
+            rest.image = 0;
             q.length = head;
+            wrapped.emplace(i + 1, std::move(rest));
         }
-        exchange.pieces.push_back(std::move(q));
-        if (rest) exchange.pieces.push_back(std::move(*rest));
     }
+    if (wrapped)
+        closed.insert(closed.begin() + static_cast<std::ptrdiff_t>(wrapped->first),
+                      std::move(wrapped->second));
+    ExchangeOn<Num> exchange;
+    exchange.pieces = std::move(closed);
     if (exchange.pieces.front().start != 0 || exchange.pieces.front().length != 1)
         throw std::logic_error("x is not a piece of its own");
     exchange.modulus = modulus;

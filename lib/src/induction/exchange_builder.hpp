@@ -73,6 +73,12 @@ public:
 
     // The transversal and number of state (p, negative), if it is one.
     std::optional<std::pair<std::size_t, Num>> locate(const Num (&p)[2], unsigned negative) const;
+    // The same, when p is likely on transversal `near`'s segment (the other
+    // end of a piece's image): a point is on one segment at most (the
+    // horizontal ones are cut at crossings), so if it is on that one, that
+    // is the answer locate() gives, found without its two searches.
+    std::optional<std::pair<std::size_t, Num>> locate(const Num (&p)[2], unsigned negative,
+                                                      std::size_t near) const;
     // Raw coordinate of a located state.
     Num raw(const std::pair<std::size_t, Num>& at) const {
         return transversals_[at.first].start + at.second;
@@ -221,10 +227,11 @@ ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
     std::vector<RawPieceOn<Num>> raw;
     using TablePiece = typename shoot::PieceTable<Int>::Piece;
 
-    auto image_of = [&](const TransversalOn<Num>& t, const Num& u, const TablePiece& piece) {
+    // q: where the state at position u of transversal t arrives, following `piece`.
+    auto image_point = [&](const TransversalOn<Num>& t, const Num& u, const TablePiece& piece,
+                           Num(&q)[2]) {
         const Num from = convert<Num>(piece.from);
         const Num at = convert<Num>(piece.t0) + Num(piece.slope()) * (u - from);
-        Num q[2];
         q[t.axis] = t.offset;
         q[1 - t.axis] = u;
         for (int j = 0; j < 2; ++j) {
@@ -233,7 +240,15 @@ ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
             else
                 q[j] += at;
         }
-        auto located = layout.locate(q, t.negative ^ piece.flip);
+    };
+    // Its transversal and number; the other end of the same piece is
+    // likely on the first end's transversal, `near`.
+    auto image_of = [&](const TransversalOn<Num>& t, const Num& u, const TablePiece& piece,
+                        std::optional<std::size_t> near) {
+        Num q[2];
+        image_point(t, u, piece, q);
+        const unsigned negative = t.negative ^ piece.flip;
+        auto located = near ? layout.locate(q, negative, *near) : layout.locate(q, negative);
         if (!located) throw std::logic_error("a piece's image is not a state of any transversal");
         return *located;
     };
@@ -257,8 +272,8 @@ ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
             piece.kind = PieceKind::absorbed;
             break;
         case Kind::reflect: {
-            const auto ia = image_of(t, first, table_piece);
-            const auto ib = image_of(t, last, table_piece);
+            const auto ia = image_of(t, first, table_piece, std::nullopt);
+            const auto ib = a == b ? ia : image_of(t, last, table_piece, ia.first);
             // A translation: same transversal, numbers in the same order.
             if (ia.first != ib.first || ib.second - ia.second != b - a)
                 throw std::logic_error("a piece of the tables is not a translation in w");
@@ -269,6 +284,14 @@ ExchangeOn<Num> build_exchange_on(const lattice::LatticeScene& scene,
         raw.push_back(std::move(piece));
     };
 
+    // One raw piece a table piece, mostly (a run of corners gives more):
+    // reserved once, the vector is not copied as it grows, nor its fresh
+    // pages touched twice.
+    std::size_t table_pieces = 0;
+    for (std::size_t id = 0; id < layout.transversals().size(); ++id)
+        for (const auto& owner : layout.owners(id))
+            table_pieces += table.pieces(owner.element, layout.transversals()[id].negative).size();
+    raw.reserve(table_pieces);
     for (std::size_t id = 0; id < layout.transversals().size(); ++id) {
         const TransversalOn<Num>& t = layout.transversals()[id];
         for (const auto& owner : layout.owners(id)) {
