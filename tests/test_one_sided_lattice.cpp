@@ -14,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -299,25 +300,35 @@ TEST_CASE("a stop while the tail is searched ends the run as a limit",
     // not the cycle. The lattice engine (on the grid), and the octagonal
     // one (on its hierarchy: a diagonal far off the channel brings it in,
     // and the answer is the same).
-    struct StopAtPoll : RunMonitor {
-        std::uint64_t stop_at = 0, polls = 0;
-        std::optional<Limit> poll(std::uint64_t) override {
-            return ++polls == stop_at ? std::optional<Limit>(Limit::interrupt) : std::nullopt;
+    // Polls are paced by the clock (PollPacer), so how many come before the
+    // tail pass varies with the machine's load; the reflections a poll names
+    // do not. Stepping polls name counts below the one Brent's detector
+    // stopped at (the last chunk ends with the answer, not a poll), and the
+    // tail pass names that count from its first step on: the first poll at
+    // the largest count a whole run names is the tail pass's first.
+    struct StopAtReflections : RunMonitor {
+        std::uint64_t stop_at = ~std::uint64_t{0}, most = 0;
+        std::optional<Limit> poll(std::uint64_t reflections) override {
+            most = std::max(most, reflections);
+            return reflections >= stop_at ? std::optional<Limit>(Limit::interrupt) : std::nullopt;
         }
     };
     Scene lattice_scene = read_scene(channel(3000, 1000, 2));
     Scene octagonal_scene = lattice_scene;
     octagonal_scene.add_diagonal(ElementKind::mirror, 5000, 5000, 5001, 5001);
     for (const Scene* s : {&lattice_scene, &octagonal_scene}) {
-        StopAtPoll counting;
+        StopAtReflections counting;
         SolveOptions options;
         options.monitor = &counting;
         const Answer whole = solve(*s, options);
         CHECK(whole.shooter == (s == &lattice_scene ? ShooterUsed::grid : ShooterUsed::bvh));
         CHECK(whole.reason == Reason::cycle);
         CHECK(whole.tail == 999);
-        StopAtPoll last;
-        last.stop_at = counting.polls;
+        // The detector stops past the tail and a period, after the answer's
+        // count (the tail and one period).
+        CHECK(counting.most > whole.reflections);
+        StopAtReflections last;
+        last.stop_at = counting.most;
         options.monitor = &last;
         const Answer stopped = solve(*s, options);
         CHECK(stopped.reason == Reason::limit);
