@@ -14,6 +14,7 @@
 #include "shoot/uniform_grid.hpp"
 #include "support/brute_force_shot.hpp"
 #include "support/case_count.hpp"
+#include "support/piece_table_states.hpp"
 #include "support/random_lattice.hpp"
 
 #include <catch2/catch.hpp>
@@ -169,28 +170,10 @@ void check_piece_tables(std::uint64_t seed, int scenes, int one_sided) {
         const UniformGrid<Int, 2> grid(ls);
         const auto table = PieceTable<Int>::build(ls, grid, 1'000'000);
         REQUIRE(table);
-        for (std::uint32_t m = 0; m < ls.elements.size(); ++m) {
-            const LatticeElement& e = ls.elements[m];
-            if (e.absorber) continue;
-            const int t = 1 - e.axis;
-            for (Integer u = e.lo[t]; u <= e.hi[t]; ++u)
-                for (unsigned d = 0; d < 4; ++d) {
-                    Int p[2] = {from_integer<Int>(e.lo[0]), from_integer<Int>(e.lo[1])};
-                    p[t] = from_integer<Int>(u);
-                    const Shot<Int> want = test::brute_force_shot<Int, 2>(ls, p, d),
-                                    got = table->shoot(p, d, m);
-                    INFO("scene " << k << ", mirror " << m << ", u = " << u << ", direction " << d);
-                    REQUIRE(got.escape == want.escape);
-                    if (want.escape) continue;
-                    REQUIRE(got.absorber == want.absorber);
-                    REQUIRE(got.t == want.t);
-                    // Pieces keep no axes met, and past an absorber nothing
-                    // is reflected, so the flip is not theirs to say there.
-                    if (want.absorber) continue;
-                    REQUIRE(got.flip == want.flip);
-                    REQUIRE(test::mirror_holds_hit<Int, 2>(ls, got, p, d));
-                }
-        }
+        INFO("scene " << k);
+        test::require_tables_answer(ls, *table, [&](const Int(&p)[2], unsigned d) {
+            return test::brute_force_shot<Int, 2>(ls, p, d);
+        });
     }
 }
 

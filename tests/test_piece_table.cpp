@@ -1,14 +1,20 @@
-// What only the piece tables promise: few pieces where runs merge, and a
-// refusal past their budget. Their answers against brute force from every
-// lattice point of every mirror are in test_next_hit_conformance.cpp.
+// What only the piece tables promise: few pieces where runs merge, a
+// refusal past their budget, and runs read from the events beside them
+// (checked on scenes crowded with such runs). Their answers against brute
+// force from every lattice point of every mirror are in
+// test_next_hit_conformance.cpp.
 #include "shoot/piece_table.hpp"
 #include "support/brute_force_shot.hpp"
+#include "support/piece_table_states.hpp"
 #include "support/portable_random.hpp"
+#include "support/random_lattice.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <random>
 #include <sstream>
+#include <type_traits>
 
 using namespace orthoray;
 using namespace orthoray::lattice;
@@ -157,4 +163,43 @@ TEST_CASE("piece tables' bucketing puts items in slot order in place", "[pieces]
                 CHECK(std::uint32_t(range.second - range.first) == start[slot + 1] - start[slot]);
             }
         }
+}
+
+// Short mirrors whose ends many rays pass just beside, joined at corners,
+// T-junctions and in line, some one-sided or absorbing, in a box: the build
+// reads an open run's map from the element whose end the neighbouring
+// position's ray meets, and must agree with the grid shot on every state.
+TEMPLATE_TEST_CASE("piece tables read runs beside element ends as the grid shoots", "[pieces]",
+                   std::int64_t, Integer) {
+    std::mt19937_64 rng(23);
+    const int scenes = std::is_same_v<TestType, Integer> ? 15 : 60;
+    for (int k = 0; k < scenes; ++k) {
+        const int size = test::pick(rng, 8, 40);
+        LatticeScene ls;
+        ls.dim = 2;
+        auto add = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
+        add(0, 0, 0, size);
+        add(0, size, 0, size);
+        add(1, 0, 0, size);
+        add(1, size, 0, size);
+        for (int i = test::pick(rng, 1, 3 * size); i > 0; --i) {
+            const int axis = test::pick(rng, 0, 1), c = test::pick(rng, 1, size - 1);
+            const int lo = test::pick(rng, 1, size - 2),
+                      hi = std::min(size - 1, lo + test::pick(rng, 1, 3));
+            add(axis, c, lo, hi);
+            // A corner, a T-junction or a mirror in line at one of its ends.
+            const int end = test::pick(rng, 0, 1) ? lo : hi, join = test::pick(rng, 0, 3);
+            if (join == 0) add(1 - axis, end, c, std::min(size - 1, c + 2));
+            if (join == 1) add(1 - axis, end, std::max(1, c - 2), std::min(size - 1, c + 2));
+            if (join == 2) add(axis, c, hi, std::min(size - 1, hi + 2));
+            if (test::pick(rng, 0, 5) == 0) ls.elements.back().absorber = true;
+        }
+        test::make_one_sided<2>(rng, ls, 25);
+        const UniformGrid<TestType, 2> grid(ls);
+        const auto table = PieceTable<TestType>::build(ls, grid, 1'000'000);
+        REQUIRE(table);
+        INFO("scene " << k);
+        test::require_tables_answer(
+            ls, *table, [&](const TestType(&p)[2], unsigned d) { return grid.shoot(p, d); });
+    }
 }

@@ -24,7 +24,9 @@
 // since the first element above A along the lines can only change at a vertex
 // of that lower envelope, and those vertices are visible events. Each piece
 // (a breakpoint itself, or an open run between two) is resolved with one
-// forward grid shot; adjacent pieces with the same map are merged.
+// forward grid shot, unless an event next to it tells its map (see
+// piece_build::run_side and docs/piece-tables.md); adjacent pieces with the
+// same map are merged.
 //
 // One-sided elements. The map of direction d only knows the elements that
 // act on d (the grid's per-direction lists), so only their ends and

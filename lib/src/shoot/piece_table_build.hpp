@@ -61,6 +61,29 @@ std::vector<std::uint32_t> by_slot(std::vector<T>& items, std::uint32_t slots,
     return start;
 }
 
+// The open run next to a position on mirror A whose ray in direction d
+// (bit i: towards -infinity on axis i) first meets the point e, where B is
+// the one element acting on d: the side of the position (+1 above, -1
+// below, 0 neither) on which the run maps as the position does. Moving the
+// start by delta along A moves the hit on B's line by delta along B when B
+// is parallel to A, and by -delta s0 s1 (s_i = -1 where bit i of d is set)
+// when perpendicular; t stays affine in delta either way. So when e is an
+// end of B, the side that moves the hit into B meets B, at the same map,
+// provided nothing else comes near: the position must not itself be an
+// event (an element crossing A there would be met at t ~ delta), and B
+// must be the only element acting on d at e (the caller's two checks);
+// nothing lies between, or the reverse shot would have stopped there.
+template <class Int>
+int run_side(const ElementBox<Int, 2>& a, const ElementBox<Int, 2>& b, const Int (&e)[2],
+             unsigned d) {
+    const int along = 1 - b.axis;
+    if (b.lo[along] == b.hi[along]) return 0; // a point: no side of it is B
+    const int extends = e[along] == b.lo[along] ? 1 : e[along] == b.hi[along] ? -1 : 0;
+    if (a.axis == b.axis) return extends;
+    const bool same_signs = ((d ^ (d >> 1)) & 1u) == 0;
+    return same_signs ? -extends : extends;
+}
+
 } // namespace piece_build
 
 template <class Int>
@@ -128,10 +151,12 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
     // A breakpoint found by shooting back from an event remembers it: the
     // forward shot from there ends at that event, with nothing in between, so
     // it needs no second walk through the grid.
-    static constexpr std::uint32_t no_event = ~std::uint32_t{0};
+    // A breakpoint at an event on its own mirror carries no event, or
+    // lone_end when that mirror is the only element there (its end, then).
+    static constexpr std::uint32_t no_event = ~std::uint32_t{0}, lone_end = no_event - 1;
     struct Break {
         std::uint32_t slot;
-        std::uint32_t event; // the event the ray from here meets first, or no_event
+        std::uint32_t event; // the event the ray meets first from here, or as above
         Int u;
         bool operator<(const Break& o) const { return slot != o.slot ? slot < o.slot : u < o.u; }
         bool operator==(const Break& o) const { return slot == o.slot && u == o.u; }
@@ -159,7 +184,9 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
     for (std::uint32_t e = 0; e < events.size(); ++e) {
         poll();
         const Int p[2] = {events[e][0], events[e][1]};
-        add_breaks_at(p, 0, 3, no_event);
+        unsigned here = 0;
+        grid.for_each_element_at(p, [&](std::uint32_t) { ++here; });
+        add_breaks_at(p, 0, 3, here == 1 ? lone_end : no_event);
         for (unsigned d = 0; d < 4; ++d) {
             if (!acted_on_at(p, d)) continue; // rays in direction d pass it unseen
             walk_back(grid, p, d, [&](const Int(&q)[2]) {
@@ -188,7 +215,10 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
         for (std::uint32_t r = 0; r < n; ++r) table.laid_out_[r] = order[r].second;
     }
 
-    // Resolve each piece with one forward shot, merging runs with one map.
+    // Resolve each piece, merging runs with one map: a position found from
+    // an event reads its map there, an open run next to one that vouches
+    // for it (piece_build::run_side) takes its map, and the rest take one
+    // forward shot each.
     table.slots_.resize(std::size_t{n} * 4);
     // Room for about one piece a breakpoint, reserved, not touched: growing
     // by doubling would hold the old and the new arrays at once, at the
@@ -196,7 +226,21 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
     // untouched reserved pages cost no memory (more pieces just grow).
     table.from_.reserve(breaks.size());
     table.hops_.reserve(breaks.size());
-    std::vector<const Break*> b; // the current slot's breakpoints, reused
+    // The current slot's positions, reused: each with the event the ray
+    // from there meets first (no_event if no reverse shot found it) and
+    // whether the position is itself an event (an event on the mirror).
+    struct Position {
+        const Int* u;
+        std::uint32_t event; // an event's index, or no_event
+        bool on_event, lone;
+    };
+    std::vector<Position> b;
+    // A piece resolved, and the side of it (+1 above, -1 below, 0 neither
+    // known) on which the open run next to it has the same map.
+    struct Resolved {
+        Hop hop;
+        int run_side = 0;
+    };
     for (const std::uint32_t m : table.laid_out_) {
         for (unsigned d = 0; d < 4; ++d) {
             poll();
@@ -205,14 +249,28 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
             range.begin = static_cast<std::uint32_t>(table.hops_.size());
             range.tangent = table.tangent_[m];
             b.clear();
-            for (std::uint32_t k = start[slot]; k < start[slot + 1]; ++k)
-                if (b.empty() || !(*b.back() == breaks[k])) b.push_back(&breaks[k]);
+            // Equal positions: one entry, which keeps the event if any
+            // (its piece then needs no shot).
+            for (std::uint32_t k = start[slot]; k < start[slot + 1]; ++k) {
+                const Break& x = breaks[k];
+                const bool on_event = x.event >= lone_end;
+                if (b.empty() || !(*b.back().u == x.u))
+                    b.push_back(Position{&x.u, on_event ? no_event : x.event, on_event,
+                                         x.event == lone_end});
+                else if (!on_event)
+                    b.back().event = x.event;
+                else {
+                    b.back().on_event = true;
+                    b.back().lone = x.event == lone_end;
+                }
+            }
             if (box(m).absorber) continue;
             const int tangent = table.tangent_[m];
             const std::size_t first = table.hops_.size();
-            auto resolve = [&](const Int& u, std::uint32_t event) {
+            auto resolve = [&](const Int& u, std::uint32_t event, bool on_event) {
                 poll.on_gmp<Int>(); // a slot may have thousands of pieces
                 Shot<Int> s;
+                Resolved r;
                 if (event == no_event) {
                     Int p[2] = {box(m).lo[0], box(m).lo[1]};
                     p[tangent] = u;
@@ -223,15 +281,22 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
                     const Int t = p[normal] < box(m).lo[normal]
                                       ? Int(box(m).lo[normal] - p[normal])
                                       : Int(p[normal] - box(m).lo[normal]);
+                    unsigned met = 0;
+                    std::uint32_t seen = 0;
                     grid.for_each_element_at(p, [&](std::uint32_t f) {
                         const ElementBox<Int, 2>& at = box(f);
-                        if (at.acts_on(d)) s.record(t, at.axis, at.absorber, f);
+                        if (!at.acts_on(d)) return;
+                        s.record(t, at.axis, at.absorber, f);
+                        ++met;
+                        seen = f;
                     });
+                    if (met == 1 && !on_event)
+                        r.run_side = piece_build::run_side(box(m), box(seen), p, d);
                 }
                 const Kind kind = s.escape     ? Kind::escape
                                   : s.absorber ? Kind::absorb
                                                : Kind::reflect;
-                Hop hop;
+                Hop& hop = r.hop;
                 hop.bits = static_cast<std::uint8_t>((s.flip & flip_mask) |
                                                      (static_cast<unsigned>(kind) << kind_shift) |
                                                      (kind == Kind::reflect ? 0u : stop_bit));
@@ -242,20 +307,54 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
                 hop.base = s.t - Int(hop.slope) * u;
                 // The mirror met, until the links below replace it by its pieces.
                 hop.next_begin = s.mirror;
+                return r;
+            };
+            auto add = [&](const Int& from, const Hop& hop) {
                 if (table.hops_.size() > first) {
                     const Hop& last = table.hops_.back();
-                    const bool same_map =
-                        last.bits == hop.bits && last.next_begin == hop.next_begin &&
-                        last.slope == hop.slope && (kind == Kind::escape || last.base == hop.base);
+                    const bool same_map = last.bits == hop.bits &&
+                                          last.next_begin == hop.next_begin &&
+                                          last.slope == hop.slope &&
+                                          (hop.kind() == Kind::escape || last.base == hop.base);
                     if (same_map) return;
                 }
-                table.from_.push_back(u);
+                table.from_.push_back(from);
                 table.hops_.push_back(hop);
             };
+            // Each position, then the open run after it: that run takes the
+            // map of a neighbour that vouches for it (run_side), else a shot.
+            // A mirror's end that no other element touches and whose ray
+            // meets no event (the lone ends below) maps as the run beside
+            // it: shifting the start into the mirror moves the ray off no
+            // event and onto no element near the start, which is the
+            // mirror's alone. So it takes that run's map, with no shot.
+            const std::size_t last = b.size() - 1;
+            auto gap = [&](std::size_t i) { return Int(*b[i].u + 1) < *b[i + 1].u; };
+            auto lone_end_at = [&](std::size_t i, const Int& end) {
+                return b[i].lone && b[i].event == no_event && *b[i].u == end;
+            };
+            const bool lo_from_run = last > 0 && gap(0) && lone_end_at(0, box(m).lo[tangent]),
+                       hi_from_run =
+                           last > 0 && gap(last - 1) && lone_end_at(last, box(m).hi[tangent]);
+            auto at = [&](std::size_t i) { return resolve(*b[i].u, b[i].event, b[i].on_event); };
+            Resolved next = lo_from_run ? Resolved{} : at(0);
             for (std::size_t i = 0; i < b.size(); ++i) {
-                resolve(b[i]->u, b[i]->event);
-                if (i + 1 < b.size() && Int(b[i]->u + 1) < b[i + 1]->u)
-                    resolve(Int(b[i]->u + 1), no_event);
+                const Resolved here = next;
+                if (i == last) {
+                    if (!hi_from_run) add(*b[i].u, here.hop);
+                    break;
+                }
+                next = i + 1 == last && hi_from_run ? Resolved{} : at(i + 1);
+                if (!gap(i)) {
+                    add(*b[i].u, here.hop);
+                    continue;
+                }
+                const Int after = *b[i].u + 1;
+                const Hop run = here.run_side > 0   ? here.hop
+                                : next.run_side < 0 ? next.hop
+                                                    : resolve(after, no_event, false).hop;
+                add(*b[i].u, i == 0 && lo_from_run ? run : here.hop);
+                add(after, run);
             }
             const std::size_t count = table.hops_.size() - range.begin;
             table.count_ += count;
