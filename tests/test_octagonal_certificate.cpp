@@ -71,7 +71,8 @@ std::string nudged(const std::string& text, const std::string& keyword, std::siz
     if (candidates.empty()) return {};
     const std::size_t at = candidates[test::pick_index(rng, 0, candidates.size() - 1)];
     std::vector<std::string> w = words_of(lines[at]);
-    const int delta = test::pick(rng, 1, 3) * (test::chance(rng, 50) ? 1 : -1);
+    const int size = test::pick(rng, 1, 3); // before the sign: operands of * are unsequenced
+    const int delta = test::chance(rng, 50) ? size : -size;
     const Integer n(w[operand]);
     const Integer moved = n + delta;
     w[operand] = (moved < 0 ? Integer(n - delta) : moved).get_str(); // counts stay >= 0

@@ -13,8 +13,9 @@ Vector point_on_a_branch(std::mt19937_64& rng, const Scene& scene) {
     for (std::int64_t i = 0;; ++i) {
         const engine::ReferenceEvent e = engine::reference_step(scene, p, v);
         if (e.escape) {
-            Rational tau(static_cast<long>(uniform(rng, 0, 5)),
-                         static_cast<long>(uniform(rng, 1, 3)));
+            // Denominator first on every compiler (gcc's order of the arguments).
+            const long den = static_cast<long>(uniform(rng, 1, 3));
+            Rational tau(static_cast<long>(uniform(rng, 0, 5)), den);
             tau.canonicalize();
             Vector x;
             for (int j = 0; j < scene.dim; ++j) x[j] = p[j] + tau * v[j];

@@ -56,7 +56,11 @@ Scene random_scene(std::mt19937_64& rng, const RandomSceneShape& shape) {
         std::vector<std::pair<Rational, Rational>> extent;
         for (int j = 0; j < d - 1; ++j) extent.push_back(extent_pair());
         ElementKind kind = chance(rng, 15) ? ElementKind::absorber : ElementKind::mirror;
-        scene.add(kind, pick(rng, 0, d - 1), coordinate(rng, shape), extent);
+        // One draw a statement: the order of a call's arguments is unspecified
+        // (gcc takes them right to left, clang left to right), and a seeded
+        // scene must be the same on both. This is the order gcc always used.
+        const Rational offset = coordinate(rng, shape);
+        scene.add(kind, pick(rng, 0, d - 1), offset, extent);
     }
 
     scene.ray().start = random_point(rng, shape);
@@ -105,7 +109,8 @@ Vector target_on_trajectory(std::mt19937_64& rng, const Scene& scene) {
         for (int j = 0; j < scene.dim; ++j) x[j] = p[j] + l * (path.points[i + 1][j] - p[j]);
     } else {
         // The last segment (escape or limit): somewhere along the direction.
-        Rational tau(pick(rng, 0, 5), pick(rng, 1, 3));
+        const int den = pick(rng, 1, 3); // drawn first on every compiler, as gcc did
+        Rational tau(pick(rng, 0, 5), den);
         tau.canonicalize();
         for (int j = 0; j < scene.dim; ++j) x[j] = p[j] + tau * path.directions[i][j];
     }
