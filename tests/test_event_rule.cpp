@@ -291,3 +291,30 @@ TEST_CASE("a one-sided mirror on a diagonal, from either side", "[event-rule][oc
     CHECK(back.point == Vector{1, 1, 0});
     CHECK(back.direction == Vector{2, 1, 0});
 }
+
+TEST_CASE("a junction is a point where some arrival splits", "[event-rule]") {
+    using engine::is_junction;
+    const Vector v{1, 2, 0};
+    const Element mx = element(ElementKind::mirror, 0), my = element(ElementKind::mirror, 1);
+    const Element sx = element(ElementKind::splitter, 0);
+    const Element sy_plus = element(ElementKind::splitter, 1, Side::plus); // acts from above
+    const Element mx_minus = element(ElementKind::mirror, 0, Side::minus);
+    // No splitter: never, whatever acts.
+    CHECK_FALSE(is_junction(2, {&mx, &my}, v, false));
+    // A two-sided splitter splits every arrival not parallel to it.
+    CHECK(is_junction(2, {&sx}, v, false));
+    // One-sided: v moves up, so it arrives from below and is not split,
+    // but -v's y component arrives from above.
+    CHECK(is_junction(2, {&sy_plus, &mx}, v, false));
+    // A splitter that every arrival moves parallel to splits none of them.
+    CHECK_FALSE(is_junction(2, {&sx, &my}, Vector{0, 1, 0}, false));
+    // A two-sided mirror of the same axis always wins over the splitter; a
+    // one-sided one leaves the arrivals from its back to the splitter.
+    CHECK_FALSE(is_junction(2, {&sx, &mx}, v, false));
+    CHECK(is_junction(2, {&sx, &mx_minus}, v, false));
+    // v = (1, 0) never crosses a y-splitter; swapped (0, 1), it does.
+    const Vector flat{1, 0, 0};
+    const Element sy = element(ElementKind::splitter, 1);
+    CHECK_FALSE(is_junction(2, {&sy}, flat, false));
+    CHECK(is_junction(2, {&sy}, flat, true));
+}

@@ -54,11 +54,28 @@ Vector vector_at(const std::vector<std::string>& words, std::size_t from, int di
 
 // The least label of every reachable state, by Dijkstra over all states
 // (the search the branch-state engine replaced), and which of them are
-// branch states: rays' starts and states leaving a splitting event.
+// branch states: rays' starts and states leaving a junction.
 struct Exhaustive {
     std::map<State, Label> label;
     std::set<State> branch;
 };
+
+// Whether some arrival at p along v with its signs changed (the scenes here
+// have no diagonals) meets an event there with two or more ways out: every
+// element on p is asked, acting on v or not.
+bool junction(const Scene& scene, const Vector& p, const Vector& v) {
+    for (unsigned signs = 0; signs < (1u << scene.dim); ++signs) {
+        Vector u = v;
+        for (int j = 0; j < scene.dim; ++j)
+            if (signs & (1u << j)) u[j] = -u[j];
+        std::vector<const Element*> acting;
+        for (const Element& e : scene.elements)
+            if (e.contains(p) && engine::acts_on(e, u)) acting.push_back(&e);
+        if (!acting.empty() && engine::event_outcome(scene.dim, acting, u).outgoing.size() >= 2)
+            return true;
+    }
+    return false;
+}
 
 Exhaustive exhaustive(const Scene& scene) {
     Exhaustive out;
@@ -79,7 +96,8 @@ Exhaustive exhaustive(const Scene& scene) {
         const engine::ReferenceEvent e = engine::reference_step(scene, s.first, s.second);
         for (const engine::Outgoing& o : e.outgoing) {
             const State next{e.point, o.direction};
-            if (e.outgoing.size() >= 2) out.branch.insert(next);
+            if (e.outgoing.size() >= 2 || junction(scene, e.point, s.second))
+                out.branch.insert(next);
             if (!settled.count(next))
                 queue.push({{label.first + o.reflection, label.second}, next});
         }
@@ -255,6 +273,7 @@ TEST_CASE("illumination certificates list the branch states and replayable witne
         shape.scene.dim = i % 2 == 0 ? 3 : 2;
         shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
         const Scene s = test::random_optics_scene(rng, shape);
+        REQUIRE_FALSE(s.has_diagonal()); // junction() above tries sign changes only
         if (s.single_trajectory()) continue;
         const std::optional<Answer> graph = explore_illumination_graph(s, 20000);
         if (!graph) continue;
@@ -274,6 +293,42 @@ TEST_CASE("illumination certificates list the branch states and replayable witne
     }
     CHECK(checked > cases / 2);
     CHECK(lit > 0);
+}
+
+// Ray 2 crosses the one-sided splitter y+ 3 from its passive side where the
+// mirror x -1 ends on it: one way out for that arrival, but an arrival from
+// above splits there, so (-1, 3) is a junction. Ray 2 reaches (-1, 3) along
+// (-1, 1/2) with 15 reflections, a split elsewhere only with 16; a search
+// whose stretches ran on through that point wrote 16 (found by a clang build,
+// whose random scenes differed).
+TEST_CASE("a branch state passed where the arrival does not split gets its least label",
+          "[illumination][certificate]") {
+    const Scene s = read_scene("dim 2\n"
+                               "mirror x+ -7 y -7 7\n"
+                               "splitter x 7 y -7 7\n"
+                               "mirror y -7 x -7 7\n"
+                               "mirror y 7 x -7 7\n"
+                               "splitter y -4 x -4 5\n"
+                               "splitter y+ 3 x -3 2\n"
+                               "splitter x -3 y -6 -5\n"
+                               "splitter x 2 y -4 1\n"
+                               "splitter y+ 6 x -5 -2\n"
+                               "mirror x- -4 y -2 -1\n"
+                               "mirror x -1 y 1 6\n"
+                               "mirror y 1 x 0 3\n"
+                               "ray -3 0 0 1\n"
+                               "ray 3 4 -1 1/2\n"
+                               "ray 1 -2 3/2 0\n"
+                               "target 10 -2\n",
+                               "passed.scene");
+    const Exhaustive all = exhaustive(s);
+    const State passed{{Rational(-1), Rational(3), Rational(0)},
+                       {Rational(-1), Rational(1, 2), Rational(0)}};
+    REQUIRE(all.branch.count(passed) == 1);
+    CHECK(all.label.at(passed) == Label{15, 2});
+    const auto [answer, text] = certified(s, {});
+    CHECK(text.find("branch -1 3 -1 1/2 ray 2 reflections 15\n") != std::string::npos);
+    check_certificate(s, answer, text, &all);
 }
 
 TEST_CASE("a limit writes a partial illumination certificate", "[illumination][certificate]") {

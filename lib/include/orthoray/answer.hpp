@@ -60,9 +60,10 @@ struct Answer {
     // period is reflections - tail.
     Integer tail;
     // The illumination question: one entry per target, in file order, and
-    // the number of branch states stored (rays' starts and states leaving an
-    // event with two or more outgoing directions, docs/optics.md; the graph
-    // engine counts every state instead). Empty for a single trajectory.
+    // the number of branch states stored (rays' starts and states leaving a
+    // junction, an event point where some arrival has two or more outgoing
+    // directions, docs/optics.md; the graph engine counts every state
+    // instead). Empty for a single trajectory.
     std::vector<TargetAnswer> targets;
     Integer states;
     Limit limit = Limit::steps; // which limit, when reason is Reason::limit

@@ -3,8 +3,8 @@
 // illumination search and the intensity search): the branch that gave the
 // target its candidate, replayed for a certificate. Its branch states are
 // found by following each state's parent back to a ray's start; the
-// stretches between them are walked again forward, each up to the split
-// that gave the next state (whose first step is that split's point and
+// stretches between them are walked again forward, each up to the junction
+// that gave the next state (whose first step is that junction's point and
 // direction), the last up to its first segment passing the target. The
 // first pass is the one that set the candidate: later passes in the same
 // stretch come after more reflections with no more intensity.

@@ -1,5 +1,7 @@
 #include "engine/event_rule.hpp"
 
+#include <algorithm>
+
 namespace orthoray::engine {
 
 bool acts_on(const Element& element, const Vector& v) {
@@ -75,6 +77,31 @@ EventOutcome event_outcome(int dim, const std::vector<const Element*>& acting, c
         if (extra == splitting) break;
     }
     return outcome;
+}
+
+bool is_junction(int dim, const std::vector<const Element*>& present, const Vector& v, bool swaps) {
+    // Only a splitter gives an event two ways out.
+    if (std::none_of(present.begin(), present.end(),
+                     [](const Element* e) { return e->kind == ElementKind::splitter; }))
+        return false;
+    std::vector<const Element*> acting;
+    for (int swap = 0; swap <= (swaps ? 1 : 0); ++swap) {
+        const Vector base = swap ? Vector{v[1], v[0], v[2]} : v;
+        unsigned moving = 0; // the axes along which it moves: their signs vary
+        for (int j = 0; j < dim; ++j)
+            if (base[j] != 0) moving |= 1u << j;
+        for (unsigned negated = 0;; negated = (negated - moving) & moving) {
+            Vector u = base;
+            for (int j = 0; j < dim; ++j)
+                if (negated & (1u << j)) u[j] = -u[j];
+            acting.clear();
+            for (const Element* e : present)
+                if (acts_on(*e, u)) acting.push_back(e);
+            if (!acting.empty() && event_outcome(dim, acting, u).outgoing.size() >= 2) return true;
+            if (negated == moving) break;
+        }
+    }
+    return false;
 }
 
 namespace {

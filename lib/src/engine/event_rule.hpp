@@ -37,6 +37,14 @@ struct EventOutcome {
 // each and that acts_on holds). `dim` is the scene's dimension.
 EventOutcome event_outcome(int dim, const std::vector<const Element*>& acting, const Vector& v);
 
+// Whether a point is a **junction** (docs/optics.md): some arrival there
+// has two or more ways out. `present` are all the elements the point lies
+// on, acting or not; the arrivals tried are v with any of its components
+// negated, and with `swaps` also with x and y exchanged: every direction a
+// branch moving along v can have (with diagonals, `swaps` must be set).
+// A point no splitter lies on is never a junction.
+bool is_junction(int dim, const std::vector<const Element*>& present, const Vector& v, bool swaps);
+
 // The fraction of a ray's intensity that leaves an event along `out`, one of
 // event_outcome's directions for v at a point where `acting` act
 // (docs/intensity.md): the product, over the elements that decide `out`, of

@@ -4,12 +4,16 @@
 // label of a branch state is the least label of a branch reaching it; a ray's
 // start begins at (0, ray). Expanding a branch state with label (K, R) walks
 // its stretch: a target first passed w reflections into it gets the
-// candidate (K + w, R), and where the stretch ends at an event with several
-// outgoing directions, each (event point, direction) is reached with
-// (K + w + [the direction changed], R). Edge weights are never negative and
-// keep the ray, so the order is preserved and labels settle in increasing
-// order: a target's best candidate is final once it is <= the least label
-// still waiting, as nothing expanded later can offer less.
+// candidate (K + w, R), and where the stretch ends at a junction (a point
+// where some arrival has several ways out), each (event point, direction)
+// leaving it is reached with (K + w + [the direction changed], R). Every
+// branch with an event at a junction ends its stretch there, whichever way
+// it arrives, so every branch reaching a branch state reaches it by such an
+// edge. Edge weights are never negative and keep the ray, so the order is
+// preserved and labels settle in increasing order: each branch state with
+// the least label over every branch reaching it, and a target's best
+// candidate is final once it is <= the least label still waiting, as
+// nothing expanded later can offer less.
 #include "engine/illumination.hpp"
 
 #include "engine/branch_search_answer.hpp"
@@ -186,7 +190,7 @@ private:
                 return poll();
             });
         if (end.kind == StretchEnd::Kind::stopped) return false;
-        if (end.kind != StretchEnd::Kind::split) return true;
+        if (end.kind != StretchEnd::Kind::junction) return true;
         for (const Outgoing& out : end.outgoing) {
             const Label child{label.reflections + end.reflections + (out.reflection ? 1 : 0),
                               label.ray};

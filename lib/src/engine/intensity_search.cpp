@@ -6,7 +6,7 @@
 // I walks its stretch (stretch.hpp): after every event the intensity becomes
 // floor(I * f), f the factor of the direction leaving it
 // (event_rule.hpp, outgoing_factor); a target passed on the way gets the
-// candidate (intensity there, ray), and where the stretch ends at a split
+// candidate (intensity there, ray), and where the stretch ends at a junction
 // each direction leaving it reaches its branch state with floor(I * f).
 // Every factor is at most 1, so intensities never grow along a branch, and
 // I -> floor(I * f) is monotone, so the more intense of two labels at a
@@ -189,7 +189,7 @@ private:
         Vector p, v;
         states_.state(b, p, v);
         bool faded = false;
-        std::vector<const Element*> split_acting; // the elements at the split ending it
+        std::vector<const Element*> split_acting; // the elements at the junction ending it
         const StretchEnd end = walk_stretch(
             stepper_, p, v,
             [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
@@ -211,16 +211,16 @@ private:
                         c = {true, intensity, ray, reflections + w, b};
                 }
                 if (!e.escape && !e.absorbed) {
-                    if (e.outgoing.size() == 1)
+                    if (e.junction) // the stretch ends here: the factors come below
+                        split_acting = e.acting;
+                    else
                         intensity = attenuated(
                             intensity, outgoing_factor(e.acting, u, e.outgoing.front().direction));
-                    else
-                        split_acting = e.acting;
                 }
                 return poll();
             });
         if (end.kind == StretchEnd::Kind::stopped) return faded;
-        if (end.kind != StretchEnd::Kind::split) return true;
+        if (end.kind != StretchEnd::Kind::junction) return true;
         for (const Outgoing& out : end.outgoing) {
             const Integer child =
                 attenuated(intensity, outgoing_factor(split_acting, end.incoming, out.direction));

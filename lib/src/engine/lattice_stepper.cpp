@@ -77,14 +77,29 @@ public:
         }
         // Every element acting there, each once (a cell lists an element once).
         std::vector<const Element*> acting;
+        bool splitter_here = false;
         grid_.for_each_element_at(q, [&](std::uint32_t k) {
-            if ((element_[k].acting >> negative) & 1u)
-                acting.push_back(&scene.elements[element_[k].source]);
+            const Element& e = scene.elements[element_[k].source];
+            splitter_here = splitter_here || e.kind == ElementKind::splitter;
+            if ((element_[k].acting >> negative) & 1u) acting.push_back(&e);
         });
         Vector point = ls_.point(at);
         const int j = ls_.active[0];
         Rational t = (point[j] - p[j]) / v[j];
-        return event_at(scene.dim, std::move(t), std::move(point), std::move(acting), v);
+        ReferenceEvent event =
+            event_at(scene.dim, std::move(t), std::move(point), std::move(acting), v);
+        if (splitter_here && !event.absorbed && !event.junction) {
+            // Another arrival may split here: every element on the point
+            // counts, acting on v or not. The lattice leaves out only
+            // elements that act on no direction of this ray's, which split
+            // nothing; and without diagonals no arrival is swapped.
+            std::vector<const Element*> present;
+            grid_.for_each_element_at(q, [&](std::uint32_t k) {
+                present.push_back(&scene.elements[element_[k].source]);
+            });
+            event.junction = is_junction(scene.dim, present, v, false);
+        }
+        return event;
     }
 
     std::size_t cells() const override { return grid_.cell_count(); }

@@ -21,6 +21,9 @@ struct ReferenceEvent {
     // Every direction leaving `point` (docs/optics.md); empty on escape or
     // absorption.
     std::vector<Outgoing> outgoing;
+    // `point` is a junction (event_rule.hpp, docs/optics.md): this arrival
+    // or another has two or more ways out there. A stretch ends at one.
+    bool junction = false;
     // The elements acting at `point` (empty on escape), for the factors of
     // the outgoing directions (outgoing_factor, docs/intensity.md).
     std::vector<const Element*> acting;
@@ -30,7 +33,8 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
 
 // The event at `point`, parameter t along p + t v, where `acting` (not empty)
 // are the elements that act on v there: the acting rule's outcome
-// (event_rule.hpp) in an event's fields. Every stepper ends with it.
+// (event_rule.hpp) in an event's fields. Every stepper ends with it, then
+// sets `junction` where the event alone does not make the point one.
 ReferenceEvent event_at(int dim, Rational t, Vector point, std::vector<const Element*> acting,
                         const Vector& v);
 

@@ -4,6 +4,7 @@
 #include "engine/event_rule.hpp"
 #include "engine/reference_step.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <new>
 
@@ -48,7 +49,20 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
         event.direction = v;
         return event;
     }
-    return event_at(scene.dim, std::move(event.t), std::move(event.point), std::move(acting), v);
+    event = event_at(scene.dim, std::move(event.t), std::move(event.point), std::move(acting), v);
+    // Another arrival may split here, but only where a splitter lies: then
+    // every element on the point counts, acting on v or not.
+    const auto splitter_on = [&](const Element& e) {
+        return e.kind == ElementKind::splitter && e.contains(event.point);
+    };
+    if (!event.absorbed && !event.junction &&
+        std::any_of(scene.elements.begin(), scene.elements.end(), splitter_on)) {
+        std::vector<const Element*> present;
+        for (const Element& e : scene.elements)
+            if (e.contains(event.point)) present.push_back(&e);
+        event.junction = is_junction(scene.dim, present, v, scene.has_diagonal());
+    }
+    return event;
 }
 
 ReferenceEvent event_at(int dim, Rational t, Vector point, std::vector<const Element*> acting,
@@ -61,6 +75,7 @@ ReferenceEvent event_at(int dim, Rational t, Vector point, std::vector<const Ele
     event.absorbed = outcome.absorbed;
     event.outgoing = std::move(outcome.outgoing);
     event.direction = event.absorbed ? v : event.outgoing.front().direction;
+    event.junction = event.outgoing.size() >= 2;
     event.acting = std::move(acting);
     return event;
 }

@@ -1,6 +1,7 @@
 // A stretch (docs/optics.md): the deterministic walk from a branch state up
-// to the next event with two or more outgoing directions (exclusive), an
-// escape, an absorption, or forever. Its states are never stored: Brent's
+// to the next junction (exclusive: an event point where some arrival has
+// two or more ways out, event_rule.hpp), an escape, an absorption, or
+// forever. Its states are never stored: Brent's
 // method (engine/cycle_detector.hpp) notices a stretch that has entered a
 // cycle while keeping O(1) states, so memory does not grow with its length.
 #pragma once
@@ -17,15 +18,15 @@ struct StretchEnd {
     enum class Kind {
         escape,   // the last segment goes to infinity
         absorbed, // an absorber stops it
-        split,    // an event with two or more outgoing directions ends it
+        junction, // an event at a junction ends it
         cycle,    // it came back to a state it had already been in
         stopped,  // the visitor asked to stop
     };
     Kind kind = Kind::stopped;
-    // Reflections along the stretch before its end (before the split event).
+    // Reflections along the stretch before its end (before the junction's event).
     std::uint64_t reflections = 0;
-    // split: the event point, the direction arriving there, and every
-    // direction leaving it.
+    // junction: the event point, the direction arriving there, and every
+    // direction leaving it (one, where only another arrival would split).
     Vector point, incoming;
     std::vector<Outgoing> outgoing;
 };
@@ -59,8 +60,8 @@ StretchEnd walk_stretch(const EventStepper& stepper, Vector p, Vector v, Visit&&
             end.kind = e.escape ? StretchEnd::Kind::escape : StretchEnd::Kind::absorbed;
             return end;
         }
-        if (e.outgoing.size() >= 2) {
-            end.kind = StretchEnd::Kind::split;
+        if (e.junction) {
+            end.kind = StretchEnd::Kind::junction;
             end.point = std::move(e.point);
             end.incoming = std::move(s.v);
             end.outgoing = std::move(e.outgoing);
