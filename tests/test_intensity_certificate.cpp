@@ -14,6 +14,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
+#include <queue>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -72,6 +74,47 @@ std::string with_last_word(const std::string& line, const std::string& word) {
 
 bool starts_with(const std::string& s, const std::string& prefix) {
     return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+using State = std::pair<Vector, Vector>;
+
+// The greatest intensity with which any branch reaches each state: Dijkstra
+// over every state, the most intense first, each event's factor applied
+// and floored as docs/intensity.md says (states reached with 0 end there).
+std::map<State, Integer> greatest_intensities(const Scene& scene) {
+    std::priority_queue<std::pair<Integer, State>> queue;
+    for (const Ray& r : scene.rays) queue.push({*r.intensity, {r.start, r.direction}});
+    std::map<State, Integer> greatest;
+    while (!queue.empty()) {
+        const auto [intensity, s] = queue.top();
+        queue.pop();
+        if (!greatest.emplace(s, intensity).second || intensity == 0) continue;
+        const engine::ReferenceEvent e = engine::reference_step(scene, s.first, s.second);
+        for (const engine::Outgoing& o : e.outgoing) {
+            const Rational f = engine::outgoing_factor(e.acting, s.second, o.direction);
+            Integer next = intensity * f.get_num();
+            mpz_fdiv_q(next.get_mpz_t(), next.get_mpz_t(), f.get_den().get_mpz_t());
+            if (!greatest.count({e.point, o.direction})) queue.push({next, {e.point, o.direction}});
+        }
+    }
+    return greatest;
+}
+
+// A branch line's state and intensity: "branch <point> <direction> intensity I".
+std::pair<State, Integer> branch_line(const std::string& line, int dim) {
+    std::istringstream in(line);
+    std::string word;
+    in >> word;
+    State s;
+    for (Vector* v : {&s.first, &s.second})
+        for (int j = 0; j < dim; ++j) {
+            in >> word;
+            const NumberToken token = read_number(word);
+            REQUIRE(token.status == NumberToken::Status::ok);
+            (*v)[j] = token.value;
+        }
+    in >> word >> word;
+    return {s, Integer(word)};
 }
 
 } // namespace
@@ -207,6 +250,43 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
     CHECK(threshold_tampered > cases / 8);
     CHECK(unlit_tampered > cases / 8);
     CHECK(start_tampered > cases / 8);
+}
+
+// The certificate lists every expanded branch state with the greatest
+// intensity of any branch reaching it (docs/intensity.md), also where a
+// branch has an event at a junction that does not split its own arrival
+// (one-sided splitters make such points common here).
+TEST_CASE("each listed branch state has the greatest intensity reaching it",
+          "[intensity][certificate][property]") {
+    std::mt19937_64 rng(2611);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 50;
+    shape.one_sided_percent = 60;
+    shape.max_rays = 3;
+    shape.max_targets = 3;
+    shape.scene.max_elements = 12;
+    shape.scene.range = 4;
+    const int cases = test::case_count(400);
+    std::size_t compared = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 3 == 0 ? 3 : 2;
+        shape.scene.max_denominator = i % 4 == 0 ? 2 : 1;
+        Scene s = test::random_optics_scene(rng, shape);
+        test::add_random_attenuation(rng, s, 400);
+        const Integer eps = test::pick(rng, 0, 20);
+        INFO("case " << i << " eps " << eps << "\n" << write_scene(s));
+        const Certified c = certify(s, eps, CertificateFormat::text);
+        INFO(c.text);
+        const std::map<State, Integer> greatest = greatest_intensities(s);
+        for (const std::string& line : lines_of(c.text)) {
+            if (!starts_with(line, "branch ")) continue;
+            const auto [state, listed] = branch_line(line, s.dim);
+            REQUIRE(greatest.count(state) == 1);
+            CHECK(listed == greatest.at(state));
+            ++compared;
+        }
+    }
+    CHECK(compared > static_cast<std::size_t>(cases));
 }
 
 TEST_CASE("a single ray with an intensity gets an intensity certificate, partial at a limit",
