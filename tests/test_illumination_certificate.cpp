@@ -295,6 +295,34 @@ TEST_CASE("illumination certificates list the branch states and replayable witne
     CHECK(lit > 0);
 }
 
+// Dense scenes with many one-sided splitters, where branches often have an
+// event at a junction that does not split their own arrival: the branch
+// lines must still be exactly the reachable branch states (those leaving a
+// junction included) with their least labels.
+TEST_CASE("illumination certificates of dense one-sided scenes list least labels",
+          "[illumination][certificate][property]") {
+    std::mt19937_64 rng(2811);
+    test::RandomOpticsShape shape;
+    shape.splitter_percent = 50;
+    shape.one_sided_percent = 60;
+    shape.scene.max_elements = 12;
+    shape.scene.range = 4;
+    const int cases = test::case_count(400);
+    int checked = 0;
+    for (int i = 0; i < cases; ++i) {
+        shape.scene.dim = i % 3 == 0 ? 3 : 2;
+        shape.scene.max_denominator = i % 4 == 0 ? 2 : 1;
+        const Scene s = test::random_optics_scene(rng, shape);
+        if (s.single_trajectory()) continue;
+        INFO("case " << i << "\n" << write_scene(s));
+        const auto [answer, text] = certified(s, {});
+        const Exhaustive all = exhaustive(s);
+        check_certificate(s, answer, text, &all);
+        ++checked;
+    }
+    CHECK(checked > cases / 2);
+}
+
 // Ray 2 crosses the one-sided splitter y+ 3 from its passive side where the
 // mirror x -1 ends on it: one way out for that arrival, but an arrival from
 // above splits there, so (-1, 3) is a junction. Ray 2 reaches (-1, 3) along
