@@ -189,7 +189,7 @@ private:
         Vector p, v;
         states_.state(b, p, v);
         bool faded = false;
-        std::vector<const Element*> split_acting; // the elements at the junction ending it
+        std::vector<const Element*> junction_acting; // the elements at the junction ending it
         const StretchEnd end = walk_stretch(
             stepper_, p, v,
             [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
@@ -212,7 +212,7 @@ private:
                 }
                 if (!e.escape && !e.absorbed) {
                     if (e.junction) // the stretch ends here: the factors come below
-                        split_acting = e.acting;
+                        junction_acting = e.acting;
                     else
                         intensity = attenuated(
                             intensity, outgoing_factor(e.acting, u, e.outgoing.front().direction));
@@ -222,8 +222,8 @@ private:
         if (end.kind == StretchEnd::Kind::stopped) return faded;
         if (end.kind != StretchEnd::Kind::junction) return true;
         for (const Outgoing& out : end.outgoing) {
-            const Integer child =
-                attenuated(intensity, outgoing_factor(split_acting, end.incoming, out.direction));
+            const Integer child = attenuated(
+                intensity, outgoing_factor(junction_acting, end.incoming, out.direction));
             if (child <= threshold_) continue;
             if (!reach(end.point, out.direction, child,
                        reflections + end.reflections + (out.reflection ? 1 : 0), ray, b)) {
