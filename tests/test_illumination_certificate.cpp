@@ -324,7 +324,7 @@ TEST_CASE("illumination certificates of dense one-sided scenes list least labels
 }
 
 // Ray 2 crosses the one-sided splitter y+ 3 from its passive side where the
-// mirror x -1 ends on it: one way out for that arrival, but an arrival from
+// mirror x -1 crosses it: one way out for that arrival, but an arrival from
 // above splits there, so (-1, 3) is a junction. Ray 2 reaches (-1, 3) along
 // (-1, 1/2) with 15 reflections, a split elsewhere only with 16; a search
 // whose stretches ran on through that point wrote 16 (found by a clang build,
