@@ -302,17 +302,10 @@ TEST_CASE("illumination certificates list the branch states and replayable witne
 TEST_CASE("illumination certificates of dense one-sided scenes list least labels",
           "[illumination][certificate][property]") {
     std::mt19937_64 rng(2811);
-    test::RandomOpticsShape shape;
-    shape.splitter_percent = 50;
-    shape.one_sided_percent = 60;
-    shape.scene.max_elements = 12;
-    shape.scene.range = 4;
     const int cases = test::case_count(400);
     int checked = 0;
     for (int i = 0; i < cases; ++i) {
-        shape.scene.dim = i % 3 == 0 ? 3 : 2;
-        shape.scene.max_denominator = i % 4 == 0 ? 2 : 1;
-        const Scene s = test::random_optics_scene(rng, shape);
+        const Scene s = test::random_optics_scene(rng, test::dense_one_sided_shape(i));
         if (s.single_trajectory()) continue;
         INFO("case " << i << "\n" << write_scene(s));
         const auto [answer, text] = certified(s, {});

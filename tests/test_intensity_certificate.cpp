@@ -259,19 +259,10 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
 TEST_CASE("each listed branch state has the greatest intensity reaching it",
           "[intensity][certificate][property]") {
     std::mt19937_64 rng(2611);
-    test::RandomOpticsShape shape;
-    shape.splitter_percent = 50;
-    shape.one_sided_percent = 60;
-    shape.max_rays = 3;
-    shape.max_targets = 3;
-    shape.scene.max_elements = 12;
-    shape.scene.range = 4;
     const int cases = test::case_count(400);
     std::size_t compared = 0;
     for (int i = 0; i < cases; ++i) {
-        shape.scene.dim = i % 3 == 0 ? 3 : 2;
-        shape.scene.max_denominator = i % 4 == 0 ? 2 : 1;
-        Scene s = test::random_optics_scene(rng, shape);
+        Scene s = test::random_optics_scene(rng, test::dense_one_sided_shape(i));
         test::add_random_attenuation(rng, s, 400);
         const Integer eps = test::pick(rng, 0, 20);
         INFO("case " << i << " eps " << eps << "\n" << write_scene(s));

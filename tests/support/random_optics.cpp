@@ -35,6 +35,17 @@ Vector point_on_a_branch(std::mt19937_64& rng, const Scene& scene) {
     }
 }
 
+RandomOpticsShape dense_one_sided_shape(int i) {
+    RandomOpticsShape shape;
+    shape.splitter_percent = 50;
+    shape.one_sided_percent = 60;
+    shape.scene.max_elements = 12;
+    shape.scene.range = 4;
+    shape.scene.dim = i % 3 == 0 ? 3 : 2;
+    shape.scene.max_denominator = i % 4 == 0 ? 2 : 1;
+    return shape;
+}
+
 Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape) {
     Scene scene = random_scene(rng, shape.scene);
     for (Element& e : scene.elements) {

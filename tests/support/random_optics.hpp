@@ -15,6 +15,12 @@ struct RandomOpticsShape {
 
 Scene random_optics_scene(std::mt19937_64& rng, const RandomOpticsShape& shape);
 
+// Dense scenes with many one-sided splitters for case i of a property test:
+// branches there often have an event at a junction (docs/optics.md) that
+// does not split their own arrival. 3D every third case, halves as
+// coordinates every fourth, whole numbers otherwise (more coincidences).
+RandomOpticsShape dense_one_sided_shape(int i);
+
 // docs/intensity.md's attributes on a scene: most mirrors and splitters get
 // a reflectance, most splitters a transmittance (each from 0, 1/2, 2/3,
 // 3/4, 9/10 and 1), and every ray an intensity in [0, max_intensity].
