@@ -28,7 +28,9 @@ class ReferenceStepper final : public EventStepper {
 public:
     explicit ReferenceStepper(const Scene& scene) : scene_(scene) {}
     ReferenceEvent next(const Vector& p, const Vector& v) const override {
-        return reference_step(scene_, p, v);
+        ReferenceEvent event = reference_step(scene_, p, v);
+        mark_reference_junction(scene_, v, event);
+        return event;
     }
     bool passes(const Vector& x, const Vector& p, const Vector& v,
                 const ReferenceEvent& event) const override {

@@ -23,13 +23,22 @@ struct ReferenceEvent {
     std::vector<Outgoing> outgoing;
     // `point` is a junction (event_rule.hpp, docs/optics.md): this arrival
     // or another has two or more ways out there. A stretch ends at one.
+    // The event steppers set it fully; reference_step alone, only for this
+    // arrival.
     bool junction = false;
     // The elements acting at `point` (empty on escape), for the factors of
     // the outgoing directions (outgoing_factor, docs/intensity.md).
     std::vector<const Element*> acting;
 };
 
+// The first acting event from p along v. Its `junction` says only whether
+// this arrival splits; mark_reference_junction adds the other arrivals for
+// the callers that end stretches there (the others skip that scan).
 ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector& v);
+
+// Sets event.junction where another arrival splits at event.point
+// (is_junction over every element on the point): O(n), like the step.
+void mark_reference_junction(const Scene& scene, const Vector& v, ReferenceEvent& event);
 
 // The event at `point`, parameter t along p + t v, where `acting` (not empty)
 // are the elements that act on v there: the acting rule's outcome

@@ -49,20 +49,21 @@ ReferenceEvent reference_step(const Scene& scene, const Vector& p, const Vector&
         event.direction = v;
         return event;
     }
-    event = event_at(scene.dim, std::move(event.t), std::move(event.point), std::move(acting), v);
+    return event_at(scene.dim, std::move(event.t), std::move(event.point), std::move(acting), v);
+}
+
+void mark_reference_junction(const Scene& scene, const Vector& v, ReferenceEvent& event) {
+    if (event.escape || event.absorbed || event.junction) return;
     // Another arrival may split here, but only where a splitter lies: then
     // every element on the point counts, acting on v or not.
     const auto splitter_on = [&](const Element& e) {
         return e.kind == ElementKind::splitter && e.contains(event.point);
     };
-    if (!event.absorbed && !event.junction &&
-        std::any_of(scene.elements.begin(), scene.elements.end(), splitter_on)) {
-        std::vector<const Element*> present;
-        for (const Element& e : scene.elements)
-            if (e.contains(event.point)) present.push_back(&e);
-        event.junction = is_junction(scene.dim, present, v, scene.has_diagonal());
-    }
-    return event;
+    if (!std::any_of(scene.elements.begin(), scene.elements.end(), splitter_on)) return;
+    std::vector<const Element*> present;
+    for (const Element& e : scene.elements)
+        if (e.contains(event.point)) present.push_back(&e);
+    event.junction = is_junction(scene.dim, present, v, scene.has_diagonal());
 }
 
 ReferenceEvent event_at(int dim, Rational t, Vector point, std::vector<const Element*> acting,

@@ -1,9 +1,9 @@
 // A stretch (docs/optics.md): the deterministic walk from a branch state up
 // to the next junction (exclusive: an event point where some arrival has
 // two or more ways out, event_rule.hpp), an escape, an absorption, or
-// forever. Its states are never stored: Brent's
-// method (engine/cycle_detector.hpp) notices a stretch that has entered a
-// cycle while keeping O(1) states, so memory does not grow with its length.
+// forever. Its states are never stored: Brent's method
+// (engine/cycle_detector.hpp) notices a stretch that has entered a cycle
+// while keeping O(1) states, so memory does not grow with its length.
 #pragma once
 
 #include "engine/cycle_detector.hpp"
