@@ -94,12 +94,12 @@ TEST_CASE("piece tables refuse beyond their budget", "[pieces]") {
 
 // A long wall under a row of short mirrors: leaving the wall, the ray meets
 // one mirror or passes between two, so the wall's slot has hundreds of
-// pieces. Both levels of the search on a long slot (the block index at
-// fixed width, and the binary search past 16 blocks) must find the piece
-// brute force agrees with, at every lattice point of the wall.
+// pieces. Every level of the search on a long slot (the block index at
+// fixed width over 16 or 32 blocks, and the binary search past 32) must find
+// the piece brute force agrees with, at every lattice point of the wall.
 TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pieces]",
                    std::int64_t, int128_t, Integer) {
-    for (const int mirrors : {12, 150}) {
+    for (const int mirrors : {12, 100, 150}) {
         LatticeScene ls;
         ls.dim = 2;
         auto add = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
@@ -111,7 +111,9 @@ TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pi
         REQUIRE(table);
         std::size_t longest = 0;
         for (unsigned d = 0; d < 4; ++d) longest = std::max(longest, table->pieces(0, d).size());
-        CHECK(longest > (mirrors > 100 ? 128u : 8u));
+        // 12 mirrors: up to 16 blocks; 100: 17 to 32; 150: more than 32.
+        CHECK(longest > (mirrors > 120 ? 256u : mirrors > 80 ? 128u : 8u));
+        if (mirrors == 100) CHECK(longest <= 256u);
         for (int x = 0; x <= length; ++x)
             for (unsigned d = 0; d < 4; ++d) {
                 const TestType p[2] = {TestType(x), TestType(0)};

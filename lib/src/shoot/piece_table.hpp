@@ -37,6 +37,7 @@
 // first that does, which hides everything behind it.
 #pragma once
 
+#include "shoot/piece_search.hpp"
 #include "shoot/uniform_grid.hpp"
 
 #include <algorithm>
@@ -262,66 +263,14 @@ private:
         return laid_out_[lo / 4];
     }
 
-    // Positions past the last slot that the fixed-width searches read (and
-    // mask off): up to 15 past a long slot's index, 7 past a short slot.
-    static constexpr std::size_t key_padding = 16;
-    static constexpr bool fixed_width = std::is_trivially_copyable_v<Int>;
-
-    // How many of key[1], ..., key[width - 1] are at most u, counting only
-    // the first `count - 1` of them (key[0], a slot's first position, is at
-    // most u): a fixed number of subtractions, masks and adds, no compares
-    // and no jumps. key <= u and i < count are the sign bits of key - (u + 1)
-    // and i - count; every position is below 8B in size (lattice_int.hpp),
-    // so the differences cannot overflow. (Plain registers: moving u into a
-    // vector register and the count back out costs more latency than the
-    // compares, measured.)
-    template <unsigned width>
-    static std::uint32_t count_at_most(const Int* key, std::uint32_t count, const Int& u) {
-        using Bits = std::conditional_t<sizeof(Int) == 8, std::uint64_t, lattice::uint128_t>;
-        constexpr int sign = 8 * sizeof(Int) - 1;
-        const Int above = u + 1, n = count;
-        Bits k = 0;
-        for (unsigned i = 1; i < width; ++i)
-            k += (static_cast<Bits>(key[i] - above) & static_cast<Bits>(Int(i) - n)) >> sign;
-        return static_cast<std::uint32_t>(k);
-    }
-
-    // The piece holding position u, counted from the slot's first: the last
-    // one starting at or before u. A slot of up to 8 pieces is one cache
-    // line of positions, counted at fixed width (4 lanes when it has at
-    // most 4, as most have: the lanes cost; 2 was slower, measured). A
-    // longer one (a box wall of a random scene has 80-100) is searched on
-    // two levels: its index, the first position of each block of 8 stored
-    // right after its pieces (up to 16 blocks at fixed width; a binary
-    // search past that), then the 8 of the block found. A binary search
-    // over the pieces would jump on every compare, unpredictably.
+    // The piece holding position u, counted from the slot's first
+    // (piece_search.hpp).
     std::uint32_t locate(const Cursor& where, const Int& u) const {
-        const Int* key = from_.data() + where.begin;
-        const std::uint32_t count = where.count;
-        if constexpr (fixed_width) {
-            if (count <= 4) return count_at_most<4>(key, count, u);
-            if (count <= 8) return count_at_most<8>(key, count, u);
-            const std::uint32_t blocks = (count + 7) / 8;
-            std::uint32_t block = 0;
-            if (blocks <= 16) {
-                block = count_at_most<16>(key + count, blocks, u);
-            } else {
-                std::uint32_t lo = 0, hi = blocks; // key[8 lo] <= u < key[8 hi] (hi: past the end)
-                while (hi - lo > 1) {
-                    const std::uint32_t mid = (lo + hi) / 2;
-                    (u < key[count + mid] ? hi : lo) = mid;
-                }
-                block = lo;
-            }
-            return 8 * block + count_at_most<8>(key + 8 * block, count - 8 * block, u);
-        } else {
-            // GMP integers: a compare costs more than a jump; search plainly.
-            return static_cast<std::uint32_t>(std::upper_bound(key, key + count, u) - key - 1);
-        }
+        return locate_piece(from_.data() + where.begin, where.count, u);
     }
 
     std::size_t count_ = 0;               // pieces (the arrays also hold long slots' indexes)
-    std::vector<Int> from_;               // per piece: its first position (+ key_padding)
+    std::vector<Int> from_;               // per piece: its first position (+ padding)
     std::vector<Hop> hops_;               // per piece: what a reflection there does
     std::vector<std::uint32_t> laid_out_; // the elements in the order their slots are laid out
     std::vector<Cursor> slots_;           // (element * 4 + direction) -> its pieces

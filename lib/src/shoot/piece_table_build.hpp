@@ -360,13 +360,9 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
             table.count_ += count;
             if (table.count_ > max_pieces || count > UINT16_MAX) return std::nullopt;
             range.count = static_cast<std::uint16_t>(count);
-            // A long slot's index: the first position of each block of 8
-            // pieces, stored right after its pieces (PieceTable::locate).
-            if (count > 8)
-                for (std::size_t k = range.begin; k < range.begin + count; k += 8) {
-                    table.from_.push_back(table.from_[k]);
-                    table.hops_.emplace_back();
-                }
+            // A long slot's index (locate_piece), with hops kept as long.
+            table.hops_.resize(table.hops_.size() +
+                               add_block_index(table.from_, range.begin, count));
         }
     }
 
@@ -390,7 +386,7 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
                 }
             }
     // Room for the fixed-width searches to read past the last slot.
-    table.from_.resize(table.hops_.size() + key_padding, Int{});
+    table.from_.resize(table.hops_.size() + piece_search_padding, Int{});
     return table;
 }
 
