@@ -56,7 +56,8 @@ std::string answer_json_members(const Answer& a, const std::string& engine, doub
     if (a.shooter != ShooterUsed::none)
         out << ",\"shooter\":" << quoted(to_string(a.shooter))
             << ",\"setup_seconds\":" << nlohmann::json(stats.setup.seconds).dump()
-            << ",\"grid_cells\":" << stats.setup.cells << ",\"pieces\":" << stats.setup.pieces;
+            << ",\"grid_cells\":" << stats.setup.cells << ",\"pieces\":" << stats.setup.pieces
+            << ",\"two_step_pieces\":" << stats.setup.two_step_pieces;
     if (a.engine == EngineUsed::induction)
         out << ",\"exchange_pieces\":" << stats.induction.pieces
             << ",\"exchange_states\":" << stats.induction.states.get_str()

@@ -75,6 +75,11 @@ std::uint64_t induction_budget(std::size_t pieces, const Integer& magnitude) {
     return 2 * std::uint64_t{pieces} * bits;
 }
 
+// The largest piece table that is composed with itself for the glide
+// (two_step_table.hpp). Measured in bench/RESULTS.md ("Two reflections a
+// lookup"): the two-step table pays while both tables stay near L2.
+constexpr std::size_t two_step_cap = std::size_t{1} << 15;
+
 double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
@@ -147,13 +152,20 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                                                        : 64 * grid.size() + 1024,
                                                    run.setup_poll());
         if (table && ls.target_reachable) table->mark_target(grid, run.target(), run.setup_poll());
+        // Two reflections a lookup (two_step_table.hpp) while both tables
+        // stay near the cache; the induction does not glide for long.
+        std::optional<shoot::TwoStepTable<Int>> two_step;
+        if (table && !induce && table->size() <= two_step_cap)
+            two_step =
+                shoot::TwoStepTable<Int>::build(*table, grid, 4 * two_step_cap, run.setup_poll());
         setup.seconds += seconds_since(begin);
         if (run.stopped_by_monitor()) return run.answer();
         if (table) {
             setup.pieces = table->size();
             run.answer().shooter = ShooterUsed::pieces;
             // Until the ray first reflects, the tables cannot say where it is.
-            TableWalk<Int> by_table{&*table, &grid};
+            setup.two_step_pieces = two_step ? two_step->size() : 0;
+            TableWalk<Int> by_table{&*table, &grid, two_step ? &*two_step : nullptr};
             if (induce) {
                 // Auto: step on the tables about as long as inducing would
                 // take, then induce; no answer costs more than twice the

@@ -13,6 +13,7 @@
 #include "lattice/setup_poll.hpp"
 #include "orthoray/solve.hpp"
 #include "shoot/piece_table.hpp"
+#include "shoot/two_step_table.hpp"
 #include "shoot/uniform_grid.hpp"
 
 #include <algorithm>
@@ -291,6 +292,9 @@ template <class Int>
 struct TableWalk {
     const shoot::PieceTable<Int>* table;
     const shoot::UniformGrid<Int, 2>* grid;
+    // The table composed with itself, when built: the glide takes two
+    // reflections a lookup on it.
+    const shoot::TwoStepTable<Int>* two_step = nullptr;
     bool placed = false;
     typename shoot::PieceTable<Int>::Cursor where{};
     shoot::Shot<Int> operator()(const State<Int, 2>& s, std::uint32_t mirror) {
@@ -301,13 +305,15 @@ struct TableWalk {
         }
         return table->shoot(s.p, where);
     }
-    // Plain reflections on the tables in one tight loop (PieceTable::glide),
-    // once the cursor is placed; the number taken.
+    // Plain reflections on the tables in one tight loop (PieceTable::glide,
+    // TwoStepTable::glide), once the cursor is placed; the number taken.
     std::uint64_t glide(State<Int, 2>& s, std::uint64_t limit, const State<Int, 2>& first) {
         if (!placed) return 0;
+        if (two_step)
+            return two_step->glide(s.p, s.negative, where, limit, first.p, first.negative);
         return table->glide(s.p, s.negative, where, limit, first.p, first.negative);
     }
-    TableWalk fresh() const { return {table, grid}; }
+    TableWalk fresh() const { return {table, grid, two_step}; }
 };
 
 } // namespace orthoray::engine::lattice_run

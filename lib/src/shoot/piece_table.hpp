@@ -48,6 +48,9 @@
 namespace orthoray::shoot {
 
 template <class Int>
+class TwoStepTable;
+
+template <class Int>
 class PieceTable {
 public:
     enum class Kind : std::uint8_t { reflect, escape, absorb };
@@ -216,6 +219,9 @@ public:
     }
 
 private:
+    // Composes this table with itself from its pieces as stored.
+    friend class TwoStepTable<Int>;
+
     // What a reflection reads of a piece, ready to use: 16 bytes on int64.
     // The hit is at t = base + slope * u (base = t0 - slope * from: |base|
     // <= 3B, so t stays within lattice_int.hpp's 8B), and the next mirror's
