@@ -153,9 +153,10 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                                                    run.setup_poll());
         if (table && ls.target_reachable) table->mark_target(grid, run.target(), run.setup_poll());
         // Two reflections a lookup (two_step_table.hpp) while both tables
-        // stay near the cache; the induction does not glide for long.
+        // stay near the cache, for a run that glides (not with a path or
+        // Brent's detector); the induction does not glide for long.
         std::optional<shoot::TwoStepTable<Int>> two_step;
-        if (table && !induce && table->size() <= two_step_cap)
+        if (table && !induce && run.glides() && table->size() <= two_step_cap)
             two_step =
                 shoot::TwoStepTable<Int>::build(*table, grid, 4 * two_step_cap, run.setup_poll());
         setup.seconds += seconds_since(begin);

@@ -99,9 +99,8 @@ public:
             // taken here. It keeps no path and knows only the first-state
             // detector, and it leaves mirror_ behind (a placed cursor no
             // longer reads it).
-            if constexpr (requires { shoot.glide(s_, stop, first_); } &&
-                          std::is_same_v<Detector, FirstStateDetector<State<Int, M>>>)
-                if (reflections_ >= 1 && !options_.path)
+            if constexpr (requires { shoot.glide(s_, stop, first_); } && may_glide)
+                if (reflections_ >= 1 && glides())
                     reflections_ += shoot.glide(s_, stop - reflections_, first_);
             if (const Step step = take(shoot(s_, mirror_), stop); step != Step::next)
                 return ended(step);
@@ -157,6 +156,11 @@ public:
     lattice::SetupPoll setup_poll() const {
         return {options_.monitor, reflections_, std::is_same_v<Int, Integer> ? 1u : 64u};
     }
+
+    // Whether a shooter's fast path (glide) is used: it keeps no path and
+    // knows only the first-state detector.
+    static constexpr bool may_glide = std::is_same_v<Detector, FirstStateDetector<State<Int, M>>>;
+    bool glides() const { return may_glide && !options_.path; }
 
     std::uint64_t reflections() const { return reflections_; }
     const Int (&target() const)[M] { return target_; }
