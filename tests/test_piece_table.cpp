@@ -5,6 +5,7 @@
 // test_next_hit_conformance.cpp.
 #include "shoot/piece_table.hpp"
 #include "support/brute_force_shot.hpp"
+#include "support/lattice_segments.hpp"
 #include "support/piece_table_states.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_lattice.hpp"
@@ -41,29 +42,13 @@ LatticeScene random_lattice(std::mt19937_64& rng, int range, int n) {
     return ls;
 }
 
-// Adds the 2D segment on the line x_axis = c over [lo, hi].
-void add_segment(LatticeScene& ls, int axis, int c, int lo, int hi) {
-    LatticeElement e;
-    e.axis = axis;
-    e.lo[axis] = e.hi[axis] = c;
-    e.lo[1 - axis] = lo;
-    e.hi[1 - axis] = hi;
-    ls.elements.push_back(e);
-}
-
 } // namespace
 
 TEST_CASE("piece tables merge runs into few pieces", "[pieces]") {
     // A 4 x 6 box: from each wall in each direction the next wall is one of
     // two, split at the single line through a corner, so each (mirror,
     // direction) has at most a handful of pieces.
-    LatticeScene ls;
-    ls.dim = 2;
-    auto wall = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
-    wall(0, 0, 0, 6);
-    wall(0, 4, 0, 6);
-    wall(1, 0, 0, 4);
-    wall(1, 6, 0, 4);
+    const LatticeScene ls = test::lattice_box(4, 6);
     const UniformGrid<std::int64_t, 2> grid(ls);
     const auto table = PieceTable<std::int64_t>::build(ls, grid, 1000);
     REQUIRE(table);
@@ -102,7 +87,7 @@ TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pi
     for (const int mirrors : {12, 100, 150}) {
         LatticeScene ls;
         ls.dim = 2;
-        auto add = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
+        auto add = [&](int axis, int c, int lo, int hi) { test::add_segment(ls, axis, c, lo, hi); };
         const int length = 4 * mirrors;
         add(1, 0, 0, length); // the wall y = 0
         for (int k = 1; k < mirrors; ++k) add(0, 4 * k, 1 + k % 3, 2 + k % 3);
@@ -179,7 +164,7 @@ TEMPLATE_TEST_CASE("piece tables read runs beside element ends as the grid shoot
         const int size = test::pick(rng, 8, 40);
         LatticeScene ls;
         ls.dim = 2;
-        auto add = [&](int axis, int c, int lo, int hi) { add_segment(ls, axis, c, lo, hi); };
+        auto add = [&](int axis, int c, int lo, int hi) { test::add_segment(ls, axis, c, lo, hi); };
         add(0, 0, 0, size);
         add(0, size, 0, size);
         add(1, 0, 0, size);

@@ -5,6 +5,7 @@
 // most one preimage, two_step_table.hpp).
 #include "shoot/two_step_table.hpp"
 #include "support/case_count.hpp"
+#include "support/lattice_segments.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_lattice.hpp"
 
@@ -103,20 +104,7 @@ TEMPLATE_TEST_CASE("two-step glides take the piece tables' reflections and stop 
 // meets the right wall at (4, 4), then the top at (2, 6). One two-step
 // lookup takes both; the table's pieces there say so.
 TEST_CASE("a two-step glide in a box takes two reflections a lookup", "[pieces][two-step]") {
-    LatticeScene ls;
-    ls.dim = 2;
-    auto wall = [&](int axis, int c, int lo, int hi) {
-        LatticeElement e;
-        e.axis = axis;
-        e.lo[axis] = e.hi[axis] = c;
-        e.lo[1 - axis] = lo;
-        e.hi[1 - axis] = hi;
-        ls.elements.push_back(e);
-    };
-    wall(0, 0, 0, 6);
-    wall(0, 4, 0, 6);
-    wall(1, 0, 0, 4);
-    wall(1, 6, 0, 4);
+    const LatticeScene ls = test::lattice_box(4, 6);
     const UniformGrid<std::int64_t, 2> grid(ls);
     const auto table = PieceTable<std::int64_t>::build(ls, grid, 1000);
     REQUIRE(table);
