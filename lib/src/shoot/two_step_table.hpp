@@ -5,10 +5,12 @@
 // (mirror, direction) as pieces, each a translation (possibly flipped) onto
 // the next mirror. T∘T is again piecewise a translation: on a piece P of T
 // from mirror A onto mirror B, the position on B is u' = ±u + c, so T∘T
-// there is cut only where u' passes a first position of B's pieces. Since T
-// is injective, each first position has at most one preimage, so T∘T has
-// at most about twice T's pieces (counted on the benchmark's random
-// scenes: 1.64x at 10^2 to 10^4 mirrors).
+// there is cut only where u' passes a first position of B's pieces. Where T
+// is injective (two-sided elements, the only scenes the engine glides on:
+// one-sided ones take Brent's detector), each first position has at most
+// one preimage, so T∘T has at most about twice T's pieces (counted on the
+// benchmark's random scenes: 1.64x at 10^2 to 10^4 mirrors); the build's
+// cap bounds it elsewhere.
 //
 // A two-step piece keeps both steps' maps (t1 = base1 + slope1 u on A, and
 // t2 = base2 + slope2 u' on B) rather than their composition: the state
