@@ -118,8 +118,8 @@ private:
         Int base1{}, base2{};
         std::uint32_t next_begin = 0;
         std::uint16_t next_count = 0;
-        std::uint8_t bits =
-            0; // flip 1 | flip 2 << 2 | mid_tangent_bit | next_tangent_bit | stop_bit
+        // flip 1 | flip 2 << 2 | mid_tangent_bit | next_tangent_bit | stop_bit
+        std::uint8_t bits = 0;
         std::int8_t slope1 = 0;
         std::uint32_t single_begin = 0;
         std::uint16_t single_count = 0;
@@ -133,9 +133,10 @@ private:
                     static_cast<std::uint8_t>((bits & next_tangent_bit) ? 1 : 0)};
         }
     };
-    static constexpr std::uint8_t flip_mask = 3,
-                                  mid_tangent_bit = 16, // the position on B runs along y
-        next_tangent_bit = 32, stop_bit = 64;
+    // mid_tangent_bit: the position on B runs along y; next_tangent_bit: so
+    // does the position on the mirror reached.
+    static constexpr std::uint8_t flip_mask = 3, mid_tangent_bit = 16, next_tangent_bit = 32,
+                                  stop_bit = 64;
     static_assert(!std::is_same_v<Int, std::int64_t> || sizeof(PairHop) == 32,
                   "a two-step piece is meant to be 32 bytes of hop on int64");
 
