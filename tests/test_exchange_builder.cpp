@@ -71,7 +71,7 @@ TEST_CASE("the exchange is the step map on every state", "[exchange][slow]") {
         for (int j = 0; j < 2; ++j) ls.target[j] = test::pick(rng, -range, range);
 
         const shoot::UniformGrid<Integer, 2> grid(ls);
-        const auto table = shoot::PieceTable<Integer>::build(ls, grid, 1'000'000);
+        const auto table = shoot::PieceTable<Integer>::build(grid, 1'000'000);
         REQUIRE(table);
         const IntervalExchange e = build_exchange(ls, grid, *table, x, x_negative);
         INFO("scene " << scene);
@@ -127,7 +127,7 @@ namespace {
 // Integer makes the builder take GMP whatever the bound allows).
 IntervalExchange gmp_exchange(const lattice::LatticeScene& ls) {
     const shoot::UniformGrid<Integer, 2> grid(ls);
-    auto table = shoot::PieceTable<Integer>::build(ls, grid, 1'000'000);
+    auto table = shoot::PieceTable<Integer>::build(grid, 1'000'000);
     REQUIRE(table);
     if (ls.target_reachable) {
         const Integer target[2] = {ls.target[0], ls.target[1]};

@@ -168,7 +168,7 @@ void check_piece_tables(std::uint64_t seed, int scenes, int one_sided) {
         LatticeScene ls = test::random_lattice_scene<2>(rng, 25, range);
         test::make_one_sided<2>(rng, ls, one_sided);
         const UniformGrid<Int, 2> grid(ls);
-        const auto table = PieceTable<Int>::build(ls, grid, 1'000'000);
+        const auto table = PieceTable<Int>::build(grid, 1'000'000);
         REQUIRE(table);
         INFO("scene " << k);
         test::require_tables_answer(ls, *table, [&](const Int(&p)[2], unsigned d) {
@@ -218,8 +218,8 @@ TEMPLATE_TEST_CASE("every next-hit structure skips one-sided elements seen from 
     check_all_random_shots<Int, 3>(73, scenes_for<Int>(80), 40, 100, 1, 50);
     check_trajectory<Int, 2>(74, 200, scenes_for<Int>(700), 50);
     check_trajectory<Int, 3>(75, 300, scenes_for<Int>(700), 50);
-    // The piece tables, whose reverse shots go on through elements that do
-    // not act on the direction they are built for.
+    // The piece tables, whose sweep looks past elements that do not act on
+    // the direction it builds.
     check_piece_tables<Int>(76, scenes_for<Int>(100), 50);
 }
 

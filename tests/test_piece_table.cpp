@@ -1,6 +1,7 @@
 // What only the piece tables promise: few pieces where runs merge, a
-// refusal past their budget, and runs read from the events beside them
-// (checked on scenes crowded with such runs). Their answers against brute
+// refusal past their budget, and maps that change exactly at the events the
+// sweep handles (checked on scenes crowded with corners, T-junctions and
+// mirrors in line). Their answers against brute
 // force from every lattice point of every mirror are in
 // test_next_hit_conformance.cpp.
 #include "shoot/piece_table.hpp"
@@ -50,7 +51,7 @@ TEST_CASE("piece tables merge runs into few pieces", "[pieces]") {
     // direction) has at most a handful of pieces.
     const LatticeScene ls = test::lattice_box(4, 6);
     const UniformGrid<std::int64_t, 2> grid(ls);
-    const auto table = PieceTable<std::int64_t>::build(ls, grid, 1000);
+    const auto table = PieceTable<std::int64_t>::build(grid, 1000);
     REQUIRE(table);
     CHECK(table->size() <= 4 * 4 * 5);
     // No piece leads back to its own mirror at t = 0; leaving wall 0 towards
@@ -74,7 +75,7 @@ TEST_CASE("piece tables refuse beyond their budget", "[pieces]") {
     std::mt19937_64 rng(5);
     const LatticeScene ls = random_lattice(rng, 50, 200);
     const UniformGrid<std::int64_t, 2> grid(ls);
-    CHECK_FALSE(PieceTable<std::int64_t>::build(ls, grid, 100));
+    CHECK_FALSE(PieceTable<std::int64_t>::build(grid, 100));
 }
 
 // A long wall under a row of short mirrors: leaving the wall, the ray meets
@@ -92,7 +93,7 @@ TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pi
         add(1, 0, 0, length); // the wall y = 0
         for (int k = 1; k < mirrors; ++k) add(0, 4 * k, 1 + k % 3, 2 + k % 3);
         const UniformGrid<TestType, 2> grid(ls);
-        const auto table = PieceTable<TestType>::build(ls, grid, 1'000'000);
+        const auto table = PieceTable<TestType>::build(grid, 1'000'000);
         REQUIRE(table);
         std::size_t longest = 0;
         for (unsigned d = 0; d < 4; ++d) longest = std::max(longest, table->pieces(0, d).size());
@@ -113,7 +114,7 @@ TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pi
     }
 }
 
-// The build buckets its breakpoints by slot in place, in two passes (high
+// The build buckets its pieces by slot in place, in two passes (high
 // bits, then low bits) once there are more slots than one pass takes keys.
 TEST_CASE("piece tables' bucketing puts items in slot order in place", "[pieces]") {
     struct Item {
@@ -156,8 +157,8 @@ TEST_CASE("piece tables' bucketing puts items in slot order in place", "[pieces]
 // T-junctions and in line, some one-sided or absorbing, in a box: the build
 // reads an open run's map from the element whose end the neighbouring
 // position's ray meets, and must agree with the grid shot on every state.
-TEMPLATE_TEST_CASE("piece tables read runs beside element ends as the grid shoots", "[pieces]",
-                   std::int64_t, Integer) {
+TEMPLATE_TEST_CASE("piece tables answer beside corners and T-junctions as the grid shoots",
+                   "[pieces]", std::int64_t, Integer) {
     std::mt19937_64 rng(23);
     const int scenes = std::is_same_v<TestType, Integer> ? 15 : 60;
     for (int k = 0; k < scenes; ++k) {
@@ -183,7 +184,7 @@ TEMPLATE_TEST_CASE("piece tables read runs beside element ends as the grid shoot
         }
         test::make_one_sided<2>(rng, ls, 25);
         const UniformGrid<TestType, 2> grid(ls);
-        const auto table = PieceTable<TestType>::build(ls, grid, 1'000'000);
+        const auto table = PieceTable<TestType>::build(grid, 1'000'000);
         REQUIRE(table);
         INFO("scene " << k);
         test::require_tables_answer(

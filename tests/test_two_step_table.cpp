@@ -51,7 +51,7 @@ TEMPLATE_TEST_CASE("two-step glides take the piece tables' reflections and stop 
         // only without them, but the glide's contract does not need that.
         if (test::pick(rng, 0, 2) == 0) test::make_one_sided<2>(rng, ls, 30);
         const UniformGrid<TestType, 2> grid(ls);
-        auto table = PieceTable<TestType>::build(ls, grid, 1'000'000);
+        auto table = PieceTable<TestType>::build(grid, 1'000'000);
         REQUIRE(table);
         // A target in half the scenes: its pieces stop both glides.
         if (test::pick(rng, 0, 1)) {
@@ -111,7 +111,7 @@ TEMPLATE_TEST_CASE("two-step glides take the piece tables' reflections and stop 
 TEST_CASE("a two-step glide in a box takes two reflections a lookup", "[pieces][two-step]") {
     const LatticeScene ls = test::lattice_box(4, 6);
     const UniformGrid<std::int64_t, 2> grid(ls);
-    const auto table = PieceTable<std::int64_t>::build(ls, grid, 1000);
+    const auto table = PieceTable<std::int64_t>::build(grid, 1000);
     REQUIRE(table);
     const auto two = TwoStepTable<std::int64_t>::build(*table, grid, 1000);
     REQUIRE(two);

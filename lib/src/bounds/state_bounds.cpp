@@ -91,7 +91,7 @@ StateBounds ray_bounds(const Scene& scene, bool with_pieces) {
     b.lattice_states = b.points * b.directions;
     if (with_pieces && scene.dim == 2 && ls.dim == 2) {
         const shoot::UniformGrid<Integer, 2> grid(ls);
-        const auto table = shoot::PieceTable<Integer>::build(ls, grid, ~std::size_t{0});
+        const auto table = shoot::PieceTable<Integer>::build(grid, ~std::size_t{0});
         b.pieces = table ? table->size() : 0;
     }
     return b;

@@ -146,7 +146,7 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
         begin = std::chrono::steady_clock::now();
         // The induction engine takes more: its cost grows with the pieces, not
         // with the reflections.
-        auto table = shoot::PieceTable<Int>::build(ls, grid,
+        auto table = shoot::PieceTable<Int>::build(grid,
                                                    options.engine == Engine::induction
                                                        ? induction::piece_cap(grid.size())
                                                        : 64 * grid.size() + 1024,

@@ -19,7 +19,7 @@ namespace {
 template <class Int>
 std::optional<IntervalExchange> exchange_on(const lattice::LatticeScene& scene) {
     const shoot::UniformGrid<Int, 2> grid(scene);
-    auto table = shoot::PieceTable<Int>::build(scene, grid, induction::piece_cap(grid.size()));
+    auto table = shoot::PieceTable<Int>::build(grid, induction::piece_cap(grid.size()));
     if (!table) return std::nullopt;
     if (scene.target_reachable) {
         Int target[2];

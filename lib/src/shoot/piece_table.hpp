@@ -16,25 +16,19 @@
 // few pieces plus a few additions (docs/piece-tables.md, "How a reflection
 // reads them").
 //
-// Building. The breakpoints of (A, d) are (1) the positions on A of every
-// event lying on A (its ends, crossings on it) and (2) the positions on A
-// from which the ray in direction d reaches an event first: found by shooting
-// from each event in the reverse direction with the exact grid. Every other u
-// has an open neighbourhood with the same next element, flip and affine t,
-// since the first element above A along the lines can only change at a vertex
-// of that lower envelope, and those vertices are visible events. Each piece
-// (a breakpoint itself, or an open run between two) is resolved with one
-// forward grid shot, unless an event next to it tells its map (see
-// piece_build::run_side and docs/piece-tables.md); adjacent pieces with the
-// same map are merged.
+// Building (piece_sweep.hpp). For each pair of opposite directions one
+// sweep visits the ray's lines in order, keeping the elements that meet the
+// current line sorted along it. A mirror's next element is its neighbour
+// there (the next one acting on the direction), and the order only changes
+// on the lines through an event: an element's first or last line, or the
+// line of a crossing. So a mirror's map is recomputed only on those lines,
+// and only for the mirrors between the event and the nearest acting element
+// before it; each run of lines with one map is one piece. No shot is taken.
 //
 // One-sided elements. The map of direction d only knows the elements that
-// act on d (the grid's per-direction lists), so only their ends and
-// crossings can change it, and the reverse shot from such an event must find
-// every mirror whose rays in direction d reach it: it goes on through the
-// elements that do not act on d (a one-way mirror the ray leaves in d is
-// one of them; its rays pass the mirrors behind it unseen) and stops at the
-// first that does, which hides everything behind it.
+// act on d: the sweep keeps every element on the line (each mirror has its
+// slots), but a mirror's next element is the first one beyond it that acts
+// on d, and the rays pass the others unseen.
 #pragma once
 
 #include "shoot/piece_search.hpp"
@@ -91,8 +85,7 @@ public:
     // `poll` is called once an element, an event and a slot, and on GMP
     // integers once a piece (it may throw lattice::SetupStopped).
     // Defined in piece_table_build.hpp.
-    static std::optional<PieceTable> build(const LatticeScene& scene,
-                                           const UniformGrid<Int, 2>& grid, std::size_t max_pieces,
+    static std::optional<PieceTable> build(const UniformGrid<Int, 2>& grid, std::size_t max_pieces,
                                            const lattice::SetupPoll& poll = {});
 
     // The pieces of mirror `element` for leaving it in direction `negative`

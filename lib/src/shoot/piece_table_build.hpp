@@ -1,8 +1,9 @@
-// Building the piece tables (piece_table.hpp): breakpoints from the events,
-// one forward shot a piece, then the links from each piece to the next
-// mirror's pieces.
+// Building the piece tables (piece_table.hpp): the pieces of every slot from
+// the sweeps (piece_sweep.hpp), bucketed into the tables' layout, then the
+// links from each piece to the next mirror's pieces.
 #pragma once
 
+#include "shoot/piece_sweep.hpp"
 #include "shoot/piece_table.hpp"
 
 namespace orthoray::shoot {
@@ -13,7 +14,7 @@ namespace piece_build {
 // Each swap moves one item into its key's range for good: the ranges before
 // the one being filled are full, so it goes to a later one. One pass over
 // all 4n slots of 10^5 mirrors chases a dependent cache miss a swap (0.5 s
-// for 1.8 M breakpoints); keys at most 1024 keep the positions written
+// for 1.8 M items); keys at most 1024 keep the positions written
 // next in the cache, so the build sorts in two such passes (by_slot).
 // The prefetch is only a hint: no position past `size` is read.
 template <class T, class Key>
@@ -61,55 +62,20 @@ std::vector<std::uint32_t> by_slot(std::vector<T>& items, std::uint32_t slots,
     return start;
 }
 
-// The open run next to a position on mirror A whose ray in direction d
-// (bit i: towards -infinity on axis i) first meets the point e, where B is
-// the one element acting on d: the side of the position (+1 above, -1
-// below, 0 neither) on which the run maps as the position does. Moving the
-// start by delta along A moves the hit on B's line by delta along B when B
-// is parallel to A, and by -delta s0 s1 (s_i = -1 where bit i of d is set)
-// when perpendicular; t stays affine in delta either way. So when e is an
-// end of B, the side that moves the hit into B meets B, at the same map,
-// provided nothing else comes near: the position must not itself be an
-// event (an element crossing A there would be met at t ~ delta), and B
-// must be the only element acting on d at e (the caller's two checks);
-// nothing lies between, or the reverse shot would have stopped there.
-template <class Int>
-int run_side(const ElementBox<Int, 2>& a, const ElementBox<Int, 2>& b, const Int (&e)[2],
-             unsigned d) {
-    const int along = 1 - b.axis;
-    if (b.lo[along] == b.hi[along]) return 0; // a point: no side of it is B
-    const int extends = e[along] == b.lo[along] ? 1 : e[along] == b.hi[along] ? -1 : 0;
-    if (a.axis == b.axis) return extends;
-    const bool same_signs = ((d ^ (d >> 1)) & 1u) == 0;
-    return same_signs ? -extends : extends;
-}
-
 } // namespace piece_build
 
 template <class Int>
-std::optional<PieceTable<Int>>
-PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& grid,
-                       std::size_t max_pieces, const lattice::SetupPoll& poll) {
+std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>& grid,
+                                                      std::size_t max_pieces,
+                                                      const lattice::SetupPoll& poll) {
     // The grid holds every element's box in Int (element e of the scene is
     // the grid's element e): read there, not copied.
     const std::uint32_t n = static_cast<std::uint32_t>(grid.size());
     auto box = [&grid](std::uint32_t e) -> const ElementBox<Int, 2>& { return grid.element(e); };
 
-    // Events: every element's two ends (so each slot of a mirror gets its
-    // first and last positions as breakpoints, from add_breaks_at below),
-    // and every crossing of a vertical and a horizontal element (T-junctions
-    // and corners included).
-    using Point = std::array<Int, 2>;
-    std::vector<Point> events;
-    for (std::uint32_t e = 0; e < n; ++e) {
-        poll();
-        const ElementBox<Int, 2>& b = box(e);
-        const int t = 1 - b.axis;
-        Point p{b.lo[0], b.lo[1]};
-        events.push_back(p);
-        p[t] = b.hi[t];
-        events.push_back(p);
-    }
+    // Every crossing of a vertical and a horizontal element (T-junctions and
+    // corners included): where the sweep's order changes.
+    std::vector<piece_sweep::Crossing> crossings;
     for (std::uint32_t e = 0; e < n; ++e) {
         poll();
         if (box(e).axis != 0) continue;
@@ -119,24 +85,11 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
             if (h.axis != 1) return;
             if (h.lo[0] <= v.lo[0] && v.lo[0] <= h.hi[0] && v.lo[1] <= h.lo[1] &&
                 h.lo[1] <= v.hi[1])
-                events.push_back(Point{v.lo[0], h.lo[1]});
+                crossings.push_back(piece_sweep::Crossing{e, f});
         });
     }
-    // Events in Z-order of their grid cells: consecutive reverse shots then
-    // walk nearby cells, which matters once the grid outgrows the cache.
-    {
-        std::vector<std::pair<std::uint64_t, Point>> keyed;
-        keyed.reserve(events.size());
-        for (const Point& p : events) {
-            poll();
-            const Int q[2] = {p[0], p[1]};
-            keyed.emplace_back(grid.locality_key(q), p);
-        }
-        std::sort(keyed.begin(), keyed.end());
-        keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
-        events.clear();
-        for (auto& [key, p] : keyed) events.push_back(p);
-    }
+    std::sort(crossings.begin(), crossings.end());
+    crossings.erase(std::unique(crossings.begin(), crossings.end()), crossings.end());
 
     PieceTable table;
     table.tangent_.resize(n);
@@ -146,66 +99,7 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
         table.acting_[e] = box(e).acting;
     }
 
-    // Breakpoints as (mirror * 4 + direction, position) pairs in one array,
-    // sorted once: far cheaper than a small vector per mirror and direction.
-    // A breakpoint found by shooting back from an event remembers it: the
-    // forward shot from there ends at that event, with nothing in between, so
-    // it needs no second walk through the grid.
-    // A breakpoint at an event on its own mirror carries no event, or
-    // lone_end when that mirror is the only element there (its end, then).
-    static constexpr std::uint32_t no_event = ~std::uint32_t{0}, lone_end = no_event - 1;
-    struct Break {
-        std::uint32_t slot;
-        std::uint32_t event; // the event the ray meets first from here, or as above
-        Int u;
-        bool operator<(const Break& o) const { return slot != o.slot ? slot < o.slot : u < o.u; }
-        bool operator==(const Break& o) const { return slot == o.slot && u == o.u; }
-    };
-    std::vector<Break> breaks;
-    breaks.reserve(std::size_t{n} * 8 + events.size() * 12);
-    auto add_breaks_at = [&](const Int(&p)[2], unsigned first_d, unsigned last_d,
-                             std::uint32_t event) {
-        grid.for_each_element_at(p, [&](std::uint32_t m) {
-            if (box(m).absorber) return;
-            for (unsigned d = first_d; d <= last_d; ++d)
-                breaks.push_back(Break{m * 4 + d, event, p[table.tangent_[m]]});
-        });
-    };
-    // Whether some element at p acts on direction d (always, without
-    // one-sided elements).
-    auto acted_on_at = [&](const Int(&p)[2], unsigned d) {
-        if (!scene.one_sided) return true;
-        bool acted = false;
-        grid.for_each_element_at(p, [&](std::uint32_t f) {
-            if (box(f).acts_on(d)) acted = true;
-        });
-        return acted;
-    };
-    for (std::uint32_t e = 0; e < events.size(); ++e) {
-        poll();
-        const Int p[2] = {events[e][0], events[e][1]};
-        unsigned here = 0;
-        grid.for_each_element_at(p, [&](std::uint32_t) { ++here; });
-        add_breaks_at(p, 0, 3, here == 1 ? lone_end : no_event);
-        for (unsigned d = 0; d < 4; ++d) {
-            if (!acted_on_at(p, d)) continue; // rays in direction d pass it unseen
-            walk_back(grid, p, d, [&](const Int(&q)[2]) {
-                add_breaks_at(q, d, d, e);
-                return acted_on_at(q, d);
-            });
-        }
-        if (2 * breaks.size() > max_pieces) return std::nullopt;
-    }
-    // Bucket by slot (a counting sort over the 4n slots, in place: a
-    // bucketed copy would double the build's largest array, 28 MB at 10^5
-    // mirrors), then sort each slot's few positions: cheaper than one
-    // comparison sort of everything.
-    const std::vector<std::uint32_t> start = piece_build::by_slot(breaks, n * 4);
-    for (std::uint32_t slot = 0; slot < n * 4; ++slot)
-        std::sort(breaks.begin() + start[slot], breaks.begin() + start[slot + 1]);
-
-    // Mirrors are resolved, and their pieces laid out, in Z-order of their
-    // low corners: the forward shots then walk nearby cells, and the ray,
+    // Mirrors' pieces are laid out in Z-order of their low corners: the ray,
     // whose next mirror is a spatial neighbour, finds its next pieces nearby.
     {
         std::vector<std::pair<std::uint64_t, std::uint32_t>> order(n);
@@ -214,160 +108,82 @@ PieceTable<Int>::build(const LatticeScene& scene, const UniformGrid<Int, 2>& gri
         table.laid_out_.resize(n);
         for (std::uint32_t r = 0; r < n; ++r) table.laid_out_[r] = order[r].second;
     }
+    std::vector<std::uint32_t> layout_rank(n);
+    for (std::uint32_t r = 0; r < n; ++r) layout_rank[table.laid_out_[r]] = r;
 
-    // Resolve each piece, merging runs with one map: a position found from
-    // an event reads its map there, an open run next to one that vouches
-    // for it (piece_build::run_side) takes its map, and the rest take one
-    // forward shot each.
+    // Every slot's pieces, one sweep a pair of opposite directions at a
+    // time, then bucketed by slot in layout order (a counting sort in place)
+    // and put in order of position. A piece waits in 24 bytes on int64, its
+    // map packed beside the next mirror (which therefore takes 26 bits).
+    if (n >= (std::uint32_t{1} << 26)) return std::nullopt;
+    struct Waiting {
+        std::uint32_t slot;
+        std::uint32_t map; // next << 6 | (slope + 1) << 4 | flip << 2 | kind
+        Int from, base;
+    };
+    // Reserved for 16 a mirror (the benchmark's random scenes have 14), not
+    // touched: growing by doubling would hold two copies at the build's peak,
+    // while untouched reserved pages cost no memory.
+    std::vector<Waiting> swept;
+    swept.reserve(std::min<std::size_t>(max_pieces + 1, std::size_t{16} * n));
+    for (unsigned d = 0; d < 2; ++d)
+        if (!piece_sweep::sweep<Int>(
+                n, box, d, crossings, poll, [&](const piece_sweep::Swept<Int>& piece) {
+                    swept.push_back(Waiting{layout_rank[piece.slot / 4] * 4 + piece.slot % 4,
+                                            piece.next << 6 |
+                                                static_cast<std::uint32_t>(piece.slope + 1) << 4 |
+                                                std::uint32_t{piece.flip} << 2 | piece.kind,
+                                            piece.from, piece.base});
+                    return swept.size() <= max_pieces;
+                }))
+            return std::nullopt;
+    crossings = {};
+    layout_rank = {};
+    const std::vector<std::uint32_t> start = piece_build::by_slot(swept, n * 4);
+    for (std::uint32_t slot = 0; slot < n * 4; ++slot)
+        std::sort(swept.begin() + start[slot], swept.begin() + start[slot + 1],
+                  [](const Waiting& x, const Waiting& y) { return x.from < y.from; });
+
+    // Exactly the room the pieces, their long slots' indexes and the search's
+    // padding take: growing past a reservation would copy the array while
+    // the waiting pieces are still held, at the build's peak.
+    std::size_t room = swept.size() + piece_search_padding;
+    for (std::uint32_t slot = 0; slot < n * 4; ++slot)
+        if (const std::size_t count = start[slot + 1] - start[slot]; count > 8)
+            room += (count + 7) / 8;
     table.slots_.resize(std::size_t{n} * 4);
-    // Room for about one piece a breakpoint, reserved, not touched: growing
-    // by doubling would hold the old and the new arrays at once, at the
-    // build's peak (10^5 mirrors: 50 MB of the 130 the tables added), while
-    // untouched reserved pages cost no memory (more pieces just grow).
-    table.from_.reserve(breaks.size());
-    table.hops_.reserve(breaks.size());
-    // The current slot's positions, reused: each with the event the ray
-    // from there meets first (no_event if no reverse shot found it) and
-    // whether the position is itself an event (an event on the mirror).
-    struct Position {
-        const Int* u;
-        std::uint32_t event; // an event's index, or no_event
-        bool on_event, lone;
-    };
-    std::vector<Position> b;
-    // A piece resolved, and the side of it (+1 above, -1 below, 0 neither
-    // known) on which the open run next to it has the same map.
-    struct Resolved {
-        Hop hop;
-        int run_side = 0;
-    };
-    for (const std::uint32_t m : table.laid_out_) {
+    table.from_.reserve(room);
+    table.hops_.reserve(room);
+    for (std::uint32_t r = 0; r < n; ++r)
         for (unsigned d = 0; d < 4; ++d) {
             poll();
-            const std::uint32_t slot = m * 4 + d;
-            Cursor& range = table.slots_[slot];
+            const std::uint32_t m = table.laid_out_[r];
+            Cursor& range = table.slots_[m * 4 + d];
             range.begin = static_cast<std::uint32_t>(table.hops_.size());
             range.tangent = table.tangent_[m];
-            b.clear();
-            // Equal positions: one entry, which keeps the event if any
-            // (its piece then needs no shot).
-            for (std::uint32_t k = start[slot]; k < start[slot + 1]; ++k) {
-                const Break& x = breaks[k];
-                const bool on_event = x.event >= lone_end;
-                if (b.empty() || !(*b.back().u == x.u))
-                    b.push_back(Position{&x.u, on_event ? no_event : x.event, on_event,
-                                         x.event == lone_end});
-                else if (!on_event)
-                    b.back().event = x.event;
-                else {
-                    b.back().on_event = true;
-                    b.back().lone = x.event == lone_end;
-                }
-            }
-            if (box(m).absorber) continue;
-            const int tangent = table.tangent_[m];
-            const std::size_t first = table.hops_.size();
-            auto resolve = [&](const Int& u, std::uint32_t event, bool on_event) {
-                poll.on_gmp<Int>(); // a slot may have thousands of pieces
-                Shot<Int> s;
-                Resolved r;
-                if (event == no_event) {
-                    Int p[2] = {box(m).lo[0], box(m).lo[1]};
-                    p[tangent] = u;
-                    s = grid.shoot(p, d);
-                } else {
-                    const Int p[2] = {events[event][0], events[event][1]};
-                    const int normal = box(m).axis;
-                    const Int t = p[normal] < box(m).lo[normal]
-                                      ? Int(box(m).lo[normal] - p[normal])
-                                      : Int(p[normal] - box(m).lo[normal]);
-                    unsigned met = 0;
-                    std::uint32_t seen = 0;
-                    grid.for_each_element_at(p, [&](std::uint32_t f) {
-                        const ElementBox<Int, 2>& at = box(f);
-                        if (!at.acts_on(d)) return;
-                        s.record(t, at.axis, at.absorber, f);
-                        ++met;
-                        seen = f;
-                    });
-                    if (met == 1 && !on_event)
-                        r.run_side = piece_build::run_side(box(m), box(seen), p, d);
-                }
-                const Kind kind = s.escape     ? Kind::escape
-                                  : s.absorber ? Kind::absorb
-                                               : Kind::reflect;
-                Hop& hop = r.hop;
-                hop.bits = static_cast<std::uint8_t>((s.flip & flip_mask) |
-                                                     (static_cast<unsigned>(kind) << kind_shift) |
-                                                     (kind == Kind::reflect ? 0u : stop_bit));
-                // Moving u along A moves the hit along B; t changes only when
-                // B is perpendicular to A (B's normal is A's tangent axis).
-                if (!s.escape && s.met == (1u << tangent))
-                    hop.slope = ((d >> tangent) & 1u) ? 1 : -1;
-                hop.base = s.t - Int(hop.slope) * u;
+            for (std::uint32_t k = start[r * 4 + d]; k < start[r * 4 + d + 1]; ++k) {
+                const Waiting& piece = swept[k];
+                const unsigned kind = piece.map & 3u;
+                Hop hop;
+                hop.base = piece.base;
+                hop.slope = static_cast<std::int8_t>(static_cast<int>((piece.map >> 4) & 3u) - 1);
+                hop.bits =
+                    static_cast<std::uint8_t>(((piece.map >> 2) & flip_mask) |
+                                              (kind << kind_shift) | (kind == 0 ? 0u : stop_bit));
                 // The mirror met, until the links below replace it by its pieces.
-                hop.next_begin = s.mirror;
-                return r;
-            };
-            auto add = [&](const Int& from, const Hop& hop) {
-                if (table.hops_.size() > first) {
-                    const Hop& last = table.hops_.back();
-                    const bool same_map = last.bits == hop.bits &&
-                                          last.next_begin == hop.next_begin &&
-                                          last.slope == hop.slope &&
-                                          (hop.kind() == Kind::escape || last.base == hop.base);
-                    if (same_map) return;
-                }
-                table.from_.push_back(from);
+                hop.next_begin = piece.map >> 6;
+                table.from_.push_back(piece.from);
                 table.hops_.push_back(hop);
-            };
-            // Each position, then the open run after it: that run takes the
-            // map of a neighbour that vouches for it (run_side), else a shot.
-            // A mirror's end that no other element touches and whose ray
-            // meets no event (the lone ends below) maps as the run beside
-            // it: shifting the start into the mirror moves the ray off no
-            // event and onto no element near the start, which is the
-            // mirror's alone. So it takes that run's map, with no shot.
-            const std::size_t last = b.size() - 1;
-            auto gap = [&](std::size_t i) { return Int(*b[i].u + 1) < *b[i + 1].u; };
-            auto lone_end_at = [&](std::size_t i, const Int& end) {
-                return b[i].lone && b[i].event == no_event && *b[i].u == end;
-            };
-            const bool lo_from_run = last > 0 && gap(0) && lone_end_at(0, box(m).lo[tangent]),
-                       hi_from_run =
-                           last > 0 && gap(last - 1) && lone_end_at(last, box(m).hi[tangent]);
-            auto at = [&](std::size_t i) { return resolve(*b[i].u, b[i].event, b[i].on_event); };
-            Resolved next = lo_from_run ? Resolved{} : at(0);
-            for (std::size_t i = 0; i < b.size(); ++i) {
-                const Resolved here = next;
-                if (i == last) {
-                    if (!hi_from_run) add(*b[i].u, here.hop);
-                    break;
-                }
-                next = i + 1 == last && hi_from_run ? Resolved{} : at(i + 1);
-                if (!gap(i)) {
-                    add(*b[i].u, here.hop);
-                    continue;
-                }
-                const Int after = *b[i].u + 1;
-                const Hop run = here.run_side > 0   ? here.hop
-                                : next.run_side < 0 ? next.hop
-                                                    : resolve(after, no_event, false).hop;
-                add(*b[i].u, i == 0 && lo_from_run ? run : here.hop);
-                add(after, run);
             }
             const std::size_t count = table.hops_.size() - range.begin;
             table.count_ += count;
-            if (table.count_ > max_pieces || count > UINT16_MAX) return std::nullopt;
+            if (count > UINT16_MAX) return std::nullopt;
             range.count = static_cast<std::uint16_t>(count);
             // A long slot's index (locate_piece), with hops kept as long.
             table.hops_.resize(table.hops_.size() +
                                add_block_index(table.from_, range.begin, count));
         }
-    }
-
-    breaks = {}; // before the links: the build's largest temporary
-    b = {};
+    swept = {}; // before the links: the build's largest temporary
 
     // Link each reflecting piece to the pieces the ray continues from.
     for (std::uint32_t m = 0; m < n; ++m)

@@ -119,7 +119,7 @@ PieceTableSummary write_piece_tables(const Scene& scene, std::ostream& out,
     if (scene.dim != 2 || ls.dim != 2) return summary;
     // GMP integers: a dump is for reading, not for speed.
     const shoot::UniformGrid<Integer, 2> grid(ls);
-    const auto table = Table::build(ls, grid, ~std::size_t{0});
+    const auto table = Table::build(grid, ~std::size_t{0});
     summary.available = true;
     summary.mirrors = ls.elements.size();
     summary.pieces = table->size();
