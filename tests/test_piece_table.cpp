@@ -78,6 +78,37 @@ TEST_CASE("piece tables refuse beyond their budget", "[pieces]") {
     CHECK_FALSE(PieceTable<std::int64_t>::build(grid, 100));
 }
 
+// Nested mirrors on one line, each overlapping all the others: on every line
+// of the ray they are one group at one depth, which the sweep revisits at
+// each of their ends. The maps must come out right past the groups' short
+// skips, and the work, quadratic in the pile, must end in a refusal under
+// the engine's budget instead of a long build.
+TEMPLATE_TEST_CASE("piece tables answer on mirrors piled on one line or refuse in bounded work",
+                   "[pieces]", std::int64_t, Integer) {
+    auto pile = [](int k, int size) {
+        LatticeScene ls = test::lattice_box(size, size);
+        for (int i = 0; i < k; ++i) test::add_segment(ls, 0, size / 2, 1 + i, size - 1 - i);
+        // Crossed in the middle: a T-junction and a crossing with the pile.
+        test::add_segment(ls, 1, size / 2, size / 2, size - 1);
+        test::add_segment(ls, 1, size / 2 + 1, 1, size - 1);
+        return ls;
+    };
+    const LatticeScene small = pile(30, 80);
+    const UniformGrid<TestType, 2> grid(small);
+    const auto table = PieceTable<TestType>::build(grid, 1'000'000);
+    REQUIRE(table);
+    test::require_tables_answer(
+        small, *table, [&](const TestType(&p)[2], unsigned d) { return grid.shoot(p, d); });
+    if constexpr (std::is_same_v<TestType, std::int64_t>) {
+        // 1,000 piled mirrors have about 12 pieces each, far below the
+        // engine's budget of 64 a mirror: only the work limit refuses them.
+        const LatticeScene big = pile(1000, 4000);
+        const UniformGrid<TestType, 2> big_grid(big);
+        CHECK_FALSE(PieceTable<TestType>::build(big_grid, 64 * big.elements.size() + 1024));
+        CHECK(PieceTable<TestType>::build(big_grid, ~std::size_t{0}));
+    }
+}
+
 // A long wall under a row of short mirrors: leaving the wall, the ray meets
 // one mirror or passes between two, so the wall's slot has hundreds of
 // pieces. Every level of the search on a long slot (the block index at

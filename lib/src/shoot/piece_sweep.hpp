@@ -92,10 +92,14 @@ struct OnLine {
 // the n elements box(0 .. n-1): the ray in d meets the next deeper element
 // on its line, in d ^ 3 the next shallower one. Calls emit(piece) for every
 // piece of every non-absorbing element's slots for both, in no particular
-// order. Returns false as soon as emit does (the caller has enough pieces).
+// order. Returns false as soon as emit does (the caller has enough pieces),
+// or once it has looked at more than work_limit elements: many mirrors on
+// one line at one depth (collinear and overlapping) make it revisit them all
+// at each of their ends, so its work can grow as the square of theirs while
+// the pieces stay few.
 template <class Int, class BoxOf, class Emit>
 bool sweep(std::uint32_t n, BoxOf&& box, unsigned d, const std::vector<Crossing>& crossings,
-           const lattice::SetupPoll& poll, Emit&& emit) {
+           std::size_t work_limit, const lattice::SetupPoll& poll, Emit&& emit) {
     using Entry = OnLine<Int>;
     const unsigned directions[2] = {d, d ^ 3u};
     const bool fx = d & 1u, fy = d & 2u;
@@ -193,8 +197,9 @@ bool sweep(std::uint32_t n, BoxOf&& box, unsigned d, const std::vector<Crossing>
         return emit(piece);
     };
 
-    std::vector<Entry> line; // the elements meeting the current line, in order
-    std::vector<Int> seeds;  // depths at which something changed on it
+    std::vector<Entry> line;  // the elements meeting the current line, in order
+    std::vector<Int> seeds;   // depths at which something changed on it
+    std::vector<Int> crossed; // depths of its crossings
     std::vector<std::pair<std::size_t, std::size_t>> dirty[2];
     // The group of elements at depth g on line a: [first, last).
     auto group = [&](const Int& a, const Int& g) {
@@ -205,47 +210,71 @@ bool sweep(std::uint32_t n, BoxOf&& box, unsigned d, const std::vector<Crossing>
             first, line.end(), g, [&a](const Int& v, const Entry& x) { return v < x.depth(a); });
         return std::pair<std::size_t, std::size_t>(first - line.begin(), last - line.begin());
     };
-    // The map of the mirror at line[i] on line a in direction k: the first
-    // group of elements beyond it (deeper for k = 0, shallower for 1)
-    // holding an element acting on that direction.
-    auto map_of = [&](int k, std::size_t i, const Int& a) {
-        const unsigned dk = directions[k];
+    // What the ray meets from depth `from` on line a in direction k: the
+    // first group of elements beyond it (deeper for k = 0, shallower for 1)
+    // holding an element acting on that direction. Every element at one
+    // depth shares it, so the sweep computes it once a group.
+    struct Met {
+        Int depth{};
+        unsigned axes = 0; // normal axes of the elements met, absorbers included
+        bool absorbed = false;
+        std::uint8_t flip = 0;
+        std::uint32_t next = 0;
+    };
+    std::size_t work = 0; // elements looked at, against work_limit
+    auto met_from = [&](int k, std::size_t i, const Int& a) {
         const std::uint8_t acting = static_cast<std::uint8_t>(Entry::acting << k);
-        const Entry& m = line[i];
-        const Int from = m.depth(a);
+        const auto below = [&a](const Entry& x, const Int& v) { return x.depth(a) < v; };
+        const auto above = [&a](const Int& v, const Entry& x) { return v < x.depth(a); };
         const std::ptrdiff_t step = k == 0 ? 1 : -1,
                              size = static_cast<std::ptrdiff_t>(line.size());
+        // Past the elements at line[i]'s depth (t = 0: not met): a step or
+        // two, or a search past a long group.
+        const Int from = line[i].depth(a);
         std::ptrdiff_t j = static_cast<std::ptrdiff_t>(i) + step;
-        while (j >= 0 && j < size && line[j].depth(a) == from) j += step; // t = 0: not met
-        Swept<Int> piece;
+        for (int tries = 0; j >= 0 && j < size && line[j].depth(a) == from; j += step)
+            if (++tries == 8) {
+                j = k == 0 ? std::upper_bound(line.begin(), line.end(), from, above) - line.begin()
+                           : std::lower_bound(line.begin(), line.end(), from, below) -
+                                 line.begin() - 1;
+                break;
+            }
+        Met met;
         while (j >= 0 && j < size) {
-            const Int g = line[j].depth(a);
-            unsigned met = 0;
-            bool absorbed = false;
-            for (; j >= 0 && j < size && line[j].depth(a) == g; j += step) {
+            met.depth = line[j].depth(a);
+            for (; j >= 0 && j < size && line[j].depth(a) == met.depth; j += step) {
+                ++work;
                 const Entry& x = line[j];
                 if (!x.is(acting)) continue;
                 const unsigned axis = x.is(Entry::vertical) ? 0 : 1;
-                met |= 1u << axis;
+                met.axes |= 1u << axis;
                 if (x.is(Entry::absorber)) {
-                    absorbed = true;
+                    met.absorbed = true;
                 } else {
-                    piece.flip |= static_cast<std::uint8_t>(1u << axis);
+                    met.flip |= static_cast<std::uint8_t>(1u << axis);
                     // Of several mirrors met at once, the last in the scene:
                     // the one the grid's shot names (its cells list elements
                     // in scene order), so both build the same tables.
-                    piece.next = std::max(piece.next, x.e);
+                    met.next = std::max(met.next, x.e);
                 }
             }
-            if (met == 0) continue;
-            piece.kind = absorbed ? 2 : 0;
-            const unsigned tangent = m.is(Entry::vertical) ? 1 : 0;
-            if (met == (1u << tangent)) piece.slope = ((dk >> tangent) & 1u) ? 1 : -1;
-            const Int t = k == 0 ? Int(g - from) : Int(from - g);
-            piece.base = Int(t - Int(piece.slope) * position(m, a));
-            return piece;
+            if (met.axes != 0) break;
         }
-        return piece; // an escape
+        return met;
+    };
+    // The map of mirror m on line a in direction k, meeting `met`.
+    auto map_of = [&](int k, const Entry& m, const Met& met, const Int& a) {
+        Swept<Int> piece;
+        if (met.axes == 0) return piece; // an escape
+        piece.kind = met.absorbed ? 2 : 0;
+        piece.flip = met.flip;
+        piece.next = met.next;
+        const unsigned tangent = m.is(Entry::vertical) ? 1 : 0;
+        if (met.axes == (1u << tangent)) piece.slope = ((directions[k] >> tangent) & 1u) ? 1 : -1;
+        const Int from = m.depth(a);
+        const Int t = k == 0 ? Int(met.depth - from) : Int(from - met.depth);
+        piece.base = Int(t - Int(piece.slope) * position(m, a));
+        return piece;
     };
 
     for (std::size_t k = 0; k < events.size();) {
@@ -266,31 +295,41 @@ bool sweep(std::uint32_t n, BoxOf&& box, unsigned d, const std::vector<Crossing>
             if (!x.is(Entry::absorber) && !(close(0, x, previous) && close(1, x, previous)))
                 return false;
         }
-        // Insertions anywhere among their depth's group, sorted below.
+        // Insertions in the order after this line. That order differs from
+        // the list's only inside the groups of this line's crossings, which
+        // are sorted next: outside them the search is exact, and its element
+        // goes into the right group.
         for (std::size_t i = k; i < end && events[i].kind == 1; ++i) {
             const Entry& x = entry[events[i].e];
-            const Int g = x.depth(a);
-            line.insert(line.begin() + static_cast<std::ptrdiff_t>(group(a, g).first), x);
-            seeds.push_back(g);
+            line.insert(std::upper_bound(line.begin(), line.end(), x, after(a)), x);
+            seeds.push_back(x.depth(a));
         }
+        crossed.clear();
         for (std::size_t i = k; i < end; ++i)
             if (events[i].kind == 2) {
                 seeds.push_back(entry[events[i].e].level);
+                crossed.push_back(entry[events[i].e].level);
             } else if (events[i].kind == 3) {
                 seeds.push_back(entry[events[i].e].level);
                 seeds.push_back(entry[events[i].f].depth(a));
             }
-        // Each group where something happened, put in the order after this
-        // line. It may change the maps of its own elements and of those
-        // before it (for d; after it for d ^ 3), up to and with the nearest
-        // group holding an element acting on that direction.
+        // Each crossing's group, put in the order after this line.
+        std::sort(crossed.begin(), crossed.end());
+        crossed.erase(std::unique(crossed.begin(), crossed.end()), crossed.end());
+        for (const Int& g : crossed) {
+            const auto [first, last] = group(a, g);
+            std::sort(line.begin() + first, line.begin() + last, after(a));
+        }
+        // Each group where something happened may change the maps of its own
+        // elements and of those before it (for d; after it for d ^ 3), up to
+        // and with the nearest group holding an element acting on that
+        // direction.
         std::sort(seeds.begin(), seeds.end());
         seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
         dirty[0].clear();
         dirty[1].clear();
         for (const Int& g : seeds) {
             const auto [first, last] = group(a, g);
-            if (last - first > 1) std::sort(line.begin() + first, line.begin() + last, after(a));
             std::size_t start = first;
             while (start > 0) {
                 --start;
@@ -306,6 +345,7 @@ bool sweep(std::uint32_t n, BoxOf&& box, unsigned d, const std::vector<Crossing>
                 while (stop < line.size() && line[stop].depth(a) == at) ++stop;
                 break;
             }
+            work += (first - start) + (stop - last);
             if (start < last) dirty[0].emplace_back(start, last);
             if (first < stop) dirty[1].emplace_back(first, stop);
         }
@@ -313,12 +353,23 @@ bool sweep(std::uint32_t n, BoxOf&& box, unsigned d, const std::vector<Crossing>
         // mirror is computed once.
         for (int side = 0; side < 2; ++side) {
             std::size_t done = 0;
+            // What the group at depth met_for meets: shared by its elements.
+            bool known = false;
+            Int met_for{};
+            Met met;
             for (const auto& [first, last] : dirty[side]) {
                 for (std::size_t i = std::max(first, done); i < last; ++i) {
                     const Entry& m = line[i];
+                    if (++work > work_limit) return false;
                     if (m.is(Entry::absorber)) continue;
                     poll.on_gmp<Int>();
-                    const Swept<Int> now = map_of(side, i, a);
+                    const Int from = m.depth(a);
+                    if (!known || !(met_for == from)) {
+                        met = met_from(side, i, a);
+                        met_for = from;
+                        known = true;
+                    }
+                    const Swept<Int> now = map_of(side, m, met, a);
                     const bool fresh = lo[m.rank] == a; // inserted on this line: no run yet
                     if (!fresh && now.same_map(run[side][m.rank])) continue;
                     if (!fresh && !close(side, m, previous)) return false;

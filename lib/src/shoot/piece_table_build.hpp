@@ -126,9 +126,12 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     // while untouched reserved pages cost no memory.
     std::vector<Waiting> swept;
     swept.reserve(std::min<std::size_t>(max_pieces + 1, std::size_t{16} * n));
+    // The sweep's work is a few elements looked at a piece on scenes like the
+    // benchmark's; far more means mirrors piled on one line (see sweep).
+    const std::size_t work_limit = max_pieces < SIZE_MAX / 32 ? 16 * (max_pieces + n) : SIZE_MAX;
     for (unsigned d = 0; d < 2; ++d)
         if (!piece_sweep::sweep<Int>(
-                n, box, d, crossings, poll, [&](const piece_sweep::Swept<Int>& piece) {
+                n, box, d, crossings, work_limit, poll, [&](const piece_sweep::Swept<Int>& piece) {
                     swept.push_back(Waiting{layout_rank[piece.slot / 4] * 4 + piece.slot % 4,
                                             piece.next << 6 |
                                                 static_cast<std::uint32_t>(piece.slope + 1) << 4 |
