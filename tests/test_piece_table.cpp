@@ -145,45 +145,6 @@ TEMPLATE_TEST_CASE("piece tables answer on long walls as brute force does", "[pi
     }
 }
 
-// The build buckets its pieces by slot in place, in two passes (high
-// bits, then low bits) once there are more slots than one pass takes keys.
-TEST_CASE("piece tables' bucketing puts items in slot order in place", "[pieces]") {
-    struct Item {
-        std::uint32_t slot, id;
-    };
-    std::mt19937_64 rng(17);
-    for (const std::uint32_t slots : {0u, 1u, 7u, 100u, 1025u, 5000u})
-        for (const std::uint32_t max_keys : {4u, 1024u}) {
-            std::vector<Item> items;
-            const int size = slots == 0 ? 0 : test::pick(rng, 0, 3 * static_cast<int>(slots));
-            for (int i = 0; i < size; ++i)
-                items.push_back({static_cast<std::uint32_t>(test::pick(rng, 0, int(slots) - 1)),
-                                 static_cast<std::uint32_t>(i)});
-            std::vector<Item> want = items;
-            std::stable_sort(want.begin(), want.end(),
-                             [](const Item& a, const Item& b) { return a.slot < b.slot; });
-            const std::vector<std::uint32_t> start = piece_build::by_slot(items, slots, max_keys);
-            INFO(slots << " slots, " << size << " items, " << max_keys << " keys a pass");
-            REQUIRE(start.size() == slots + 1);
-            CHECK(start[slots] == items.size());
-            std::vector<bool> seen(items.size());
-            for (std::uint32_t slot = 0; slot < slots; ++slot) {
-                REQUIRE(start[slot] <= start[slot + 1]);
-                for (std::uint32_t k = start[slot]; k < start[slot + 1]; ++k) {
-                    REQUIRE(items[k].slot == slot);
-                    REQUIRE(items[k].id < seen.size());
-                    REQUIRE_FALSE(seen[items[k].id]);
-                    seen[items[k].id] = true;
-                }
-                // Each slot holds as many items as the stable sort gives it.
-                const auto range =
-                    std::equal_range(want.begin(), want.end(), Item{slot, 0},
-                                     [](const Item& a, const Item& b) { return a.slot < b.slot; });
-                CHECK(std::uint32_t(range.second - range.first) == start[slot + 1] - start[slot]);
-            }
-        }
-}
-
 // Short mirrors whose ends many rays pass just beside, joined at corners,
 // T-junctions and in line, some one-sided or absorbing, in a box: the build
 // reads an open run's map from the element whose end the neighbouring

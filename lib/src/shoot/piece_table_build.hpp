@@ -1,68 +1,12 @@
 // Building the piece tables (piece_table.hpp): the pieces of every slot from
-// the sweeps (piece_sweep.hpp), bucketed into the tables' layout, then the
-// links from each piece to the next mirror's pieces.
+// the sweeps (piece_sweep.hpp), counted by slot, then each written once into
+// its place in the tables' layout, linked to the next mirror's pieces.
 #pragma once
 
 #include "shoot/piece_sweep.hpp"
 #include "shoot/piece_table.hpp"
 
 namespace orthoray::shoot {
-namespace piece_build {
-
-// Puts items[0, size) in order of key(item) in [0, keys), in place, and
-// returns where each key's items start (keys + 1 entries, the last = size).
-// Each swap moves one item into its key's range for good: the ranges before
-// the one being filled are full, so it goes to a later one. One pass over
-// all 4n slots of 10^5 mirrors chases a dependent cache miss a swap (0.5 s
-// for 1.8 M items); keys at most 1024 keep the positions written
-// next in the cache, so the build sorts in two such passes (by_slot).
-// The prefetch is only a hint: no position past `size` is read.
-template <class T, class Key>
-std::vector<std::uint32_t> bucket(T* items, std::uint32_t size, std::uint32_t keys, Key key) {
-    std::vector<std::uint32_t> start(std::size_t{keys} + 1, 0);
-    for (std::uint32_t i = 0; i < size; ++i) ++start[key(items[i]) + 1];
-    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::uint32_t k = 0; k < keys; ++k)
-        while (fill[k] < start[k + 1]) {
-            T& item = items[fill[k]];
-            const std::uint32_t to = key(item);
-            if (to == k) {
-                ++fill[k];
-            } else {
-                std::swap(item, items[fill[to]++]);
-                // The next line of that range, read when it is filled further.
-                __builtin_prefetch(items + std::min<std::size_t>(size, fill[to] + 64 / sizeof(T)));
-            }
-        }
-    return start;
-}
-
-// Puts `items` in order of their `slot` (below `slots`), in place, by its
-// high bits and then by its low bits within each range, each pass with at
-// most about `max_keys` keys; returns where each slot's items start
-// (slots + 1 entries).
-template <class T>
-std::vector<std::uint32_t> by_slot(std::vector<T>& items, std::uint32_t slots,
-                                   std::uint32_t max_keys = 1024) {
-    unsigned low = 0;
-    while ((slots >> low) > max_keys) ++low;
-    const std::uint32_t coarse = (slots >> low) + 1, fine = 1u << low;
-    const auto size = static_cast<std::uint32_t>(items.size());
-    const std::vector<std::uint32_t> outer =
-        bucket(items.data(), size, coarse, [low](const T& x) { return x.slot >> low; });
-    std::vector<std::uint32_t> start(std::size_t{slots} + 1, size);
-    for (std::uint32_t c = 0; c < coarse; ++c) {
-        const std::vector<std::uint32_t> inner =
-            bucket(items.data() + outer[c], outer[c + 1] - outer[c], fine,
-                   [fine](const T& x) { return x.slot & (fine - 1); });
-        for (std::uint32_t f = 0; f < fine && c * fine + f < slots; ++f)
-            start[c * fine + f] = outer[c] + inner[f];
-    }
-    return start;
-}
-
-} // namespace piece_build
 
 template <class Int>
 std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>& grid,
@@ -104,7 +48,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     {
         std::vector<std::pair<std::uint64_t, std::uint32_t>> order(n);
         for (std::uint32_t m = 0; m < n; ++m) order[m] = {grid.locality_key(box(m).lo), m};
-        std::sort(order.begin(), order.end());
+        piece_sweep::sort_by_key(order.begin(), order.end(), [](const auto& x) { return x.first; });
         table.laid_out_.resize(n);
         for (std::uint32_t r = 0; r < n; ++r) table.laid_out_[r] = order[r].second;
     }
@@ -112,9 +56,10 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     for (std::uint32_t r = 0; r < n; ++r) layout_rank[table.laid_out_[r]] = r;
 
     // Every slot's pieces, one sweep a pair of opposite directions at a
-    // time, then bucketed by slot in layout order (a counting sort in place)
-    // and put in order of position. A piece waits in 24 bytes on int64, its
-    // map packed beside the next mirror (which therefore takes 26 bits).
+    // time, each counted in its slot (numbered in layout order: the sweep
+    // names each element by its layout rank). A piece waits in 24 bytes on
+    // int64, its map packed beside the next mirror (which therefore takes
+    // 26 bits).
     if (n >= (std::uint32_t{1} << 26)) return std::nullopt;
     struct Waiting {
         std::uint32_t slot;
@@ -126,13 +71,17 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     // while untouched reserved pages cost no memory.
     std::vector<Waiting> swept;
     swept.reserve(std::min<std::size_t>(max_pieces + 1, std::size_t{16} * n));
+    std::vector<std::uint32_t> place(std::size_t{n} * 4 + 1, 0); // pieces a slot, then its start
     // The sweep's work is a few elements looked at a piece on scenes like the
     // benchmark's; far more means mirrors piled on one line (see sweep).
     const std::size_t work_limit = max_pieces < SIZE_MAX / 32 ? 16 * (max_pieces + n) : SIZE_MAX;
     for (unsigned d = 0; d < 2; ++d)
         if (!piece_sweep::sweep<Int>(
-                n, box, d, crossings, work_limit, poll, [&](const piece_sweep::Swept<Int>& piece) {
-                    swept.push_back(Waiting{layout_rank[piece.slot / 4] * 4 + piece.slot % 4,
+                n, box, [&layout_rank](std::uint32_t e) { return layout_rank[e]; }, d, crossings,
+                work_limit, poll,
+                [&](const piece_sweep::Swept<Int>& piece) {
+                    ++place[piece.slot];
+                    swept.push_back(Waiting{piece.slot,
                                             piece.next << 6 |
                                                 static_cast<std::uint32_t>(piece.slope + 1) << 4 |
                                                 std::uint32_t{piece.flip} << 2 | piece.kind,
@@ -142,70 +91,80 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
             return std::nullopt;
     crossings = {};
     layout_rank = {};
-    const std::vector<std::uint32_t> start = piece_build::by_slot(swept, n * 4);
-    for (std::uint32_t slot = 0; slot < n * 4; ++slot)
-        std::sort(swept.begin() + start[slot], swept.begin() + start[slot + 1],
-                  [](const Waiting& x, const Waiting& y) { return x.from < y.from; });
 
-    // Exactly the room the pieces, their long slots' indexes and the search's
-    // padding take: growing past a reservation would copy the array while
-    // the waiting pieces are still held, at the build's peak.
-    std::size_t room = swept.size() + piece_search_padding;
-    for (std::uint32_t slot = 0; slot < n * 4; ++slot)
-        if (const std::size_t count = start[slot + 1] - start[slot]; count > 8)
-            room += (count + 7) / 8;
+    // Where each slot goes: slots in layout order, each followed by its
+    // index when it is long (locate_piece). So every cursor is known before
+    // any piece is placed, and a piece is written once, link and all: at the
+    // slot's next place, or its previous one where the sweep found the
+    // slot's pieces in falling order (the sweep of d also serves d ^ 3).
     table.slots_.resize(std::size_t{n} * 4);
-    table.from_.reserve(room);
-    table.hops_.reserve(room);
+    std::vector<bool> falling(std::size_t{n} * 4);
+    std::size_t room = 0;
     for (std::uint32_t r = 0; r < n; ++r)
         for (unsigned d = 0; d < 4; ++d) {
             poll();
+            const std::uint32_t count = place[r * 4 + d];
+            if (count > UINT16_MAX || room > UINT32_MAX - 2 * std::size_t{count})
+                return std::nullopt;
             const std::uint32_t m = table.laid_out_[r];
-            Cursor& range = table.slots_[m * 4 + d];
-            range.begin = static_cast<std::uint32_t>(table.hops_.size());
-            range.tangent = table.tangent_[m];
-            for (std::uint32_t k = start[r * 4 + d]; k < start[r * 4 + d + 1]; ++k) {
-                const Waiting& piece = swept[k];
-                const unsigned kind = piece.map & 3u;
-                Hop hop;
-                hop.base = piece.base;
-                hop.slope = static_cast<std::int8_t>(static_cast<int>((piece.map >> 4) & 3u) - 1);
-                hop.bits =
-                    static_cast<std::uint8_t>(((piece.map >> 2) & flip_mask) |
-                                              (kind << kind_shift) | (kind == 0 ? 0u : stop_bit));
-                // The mirror met, until the links below replace it by its pieces.
-                hop.next_begin = piece.map >> 6;
-                table.from_.push_back(piece.from);
-                table.hops_.push_back(hop);
-            }
-            const std::size_t count = table.hops_.size() - range.begin;
-            table.count_ += count;
-            if (count > UINT16_MAX) return std::nullopt;
-            range.count = static_cast<std::uint16_t>(count);
-            // A long slot's index (locate_piece), with hops kept as long.
-            table.hops_.resize(table.hops_.size() +
-                               add_block_index(table.from_, range.begin, count));
+            table.slots_[m * 4 + d] = Cursor{static_cast<std::uint32_t>(room),
+                                             static_cast<std::uint16_t>(count), table.tangent_[m]};
+            falling[r * 4 + d] = piece_sweep::falls(d == 0 || d == 3 ? 0 : 1, box(m).axis == 0);
+            place[r * 4 + d] = static_cast<std::uint32_t>(falling[r * 4 + d] ? room + count : room);
+            room += count + (count > 8 ? (count + 7) / 8 : 0);
         }
-    swept = {}; // before the links: the build's largest temporary
+    table.count_ = swept.size();
+    // Exactly the room the pieces, their long slots' indexes and the search's
+    // padding take, allocated while the waiting pieces are held (the build's
+    // peak).
+    table.from_.resize(room + piece_search_padding);
+    table.hops_.resize(room);
 
-    // Link each reflecting piece to the pieces the ray continues from.
-    for (std::uint32_t m = 0; m < n; ++m)
-        for (unsigned d = 0; d < 4; ++d)
-            for (std::uint32_t k = table.slots_[m * 4 + d].begin,
-                               end = k + table.slots_[m * 4 + d].count;
-                 k < end; ++k) {
-                Hop& hop = table.hops_[k];
-                if (hop.kind() != Kind::reflect) {
-                    hop.next_begin = 0; // no ray goes on from an escape or an absorber
-                } else {
-                    const Cursor next = table.at(hop.next_begin, d ^ (hop.bits & flip_mask));
-                    hop.next_begin = next.begin;
-                    hop.next_count = next.count;
-                    if (next.tangent) hop.bits |= next_tangent_bit;
-                }
-            }
-    // Room for the fixed-width searches to read past the last slot.
-    table.from_.resize(table.hops_.size() + piece_search_padding, Int{});
+    // Each piece to its place, in the order the sweep found them, and
+    // linked to the pieces the ray continues from.
+    for (std::size_t i = 0; i < swept.size(); ++i) {
+        // The places a piece further on writes and the cursor it reads are
+        // scattered over the tables: fetched ahead (hints only, so a place
+        // that moves on meanwhile costs nothing but the hint).
+        if (i + 16 < swept.size()) {
+            const Waiting& ahead = swept[i + 16];
+            const std::uint32_t to = place[ahead.slot];
+            __builtin_prefetch(table.hops_.data() + std::min<std::size_t>(to, room - 1), 1);
+            __builtin_prefetch(table.from_.data() + to, 1);
+            __builtin_prefetch(table.slots_.data() + (ahead.map >> 6) * 4);
+        }
+        const Waiting& piece = swept[i];
+        poll.on_gmp<Int>();
+        const std::uint32_t k = falling[piece.slot] ? --place[piece.slot] : place[piece.slot]++;
+        const unsigned kind = piece.map & 3u, flip = (piece.map >> 2) & flip_mask;
+        Hop& hop = table.hops_[k];
+        hop.base = piece.base;
+        hop.slope = static_cast<std::int8_t>(static_cast<int>((piece.map >> 4) & 3u) - 1);
+        hop.bits =
+            static_cast<std::uint8_t>(flip | (kind << kind_shift) | (kind == 0 ? 0u : stop_bit));
+        if (kind == 0) { // a reflection: the ray goes on from the next mirror's slot
+            const Cursor next = table.at(piece.map >> 6, (piece.slot % 4) ^ flip);
+            hop.next_begin = next.begin;
+            hop.next_count = next.count;
+            if (next.tangent) hop.bits |= next_tangent_bit;
+        }
+        table.from_[k] = piece.from;
+    }
+    swept = {};
+
+    // Each slot in order (the sweep's promise, checked: a slot out of order
+    // would send rays astray), and the long ones indexed.
+    for (std::uint32_t r = 0; r < n * 4; ++r) {
+        poll();
+        const Cursor slot = table.slots_[table.laid_out_[r / 4] * 4 + r % 4];
+        Int* from = table.from_.data() + slot.begin;
+        for (std::uint32_t k = 1; k < slot.count; ++k)
+            if (!(from[k - 1] < from[k]))
+                throw std::logic_error("piece tables: a slot's pieces are out of order");
+        if (slot.count > 8)
+            for (std::uint32_t b = 0; b < (slot.count + 7u) / 8u; ++b)
+                from[slot.count + b] = from[8 * b];
+    }
     return table;
 }
 
