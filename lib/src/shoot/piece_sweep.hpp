@@ -78,6 +78,7 @@ struct Swept {
     std::int8_t slope = 0;
     std::uint8_t flip = 0;
     std::uint8_t kind = 1;
+    bool falling = false; // set on an emitted piece: its slot's pieces come falling (falls)
     // The same map: the same elements met, at the same t. An escape leaves
     // every other field zero, so plain equality is the test; & rather than
     // && keeps it free of jumps (the sweep asks it once a map recomputed,
@@ -275,6 +276,7 @@ bool sweep(std::uint32_t n, BoxOf&& box, Name&& name, unsigned d,
     auto close = [&](int k, const Entry& m, const Int& last) {
         Swept<Int> piece = run[k][m.rank];
         piece.slot = m.name * 4 + directions[k];
+        piece.falling = falls(d, m.is(Entry::vertical));
         piece.from = std::min(position(m, run_from[k][m.rank]), position(m, last));
         return emit(piece);
     };

@@ -62,8 +62,8 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     // 26 bits).
     if (n >= (std::uint32_t{1} << 26)) return std::nullopt;
     struct Waiting {
-        std::uint32_t slot;
-        std::uint32_t map; // next << 6 | (slope + 1) << 4 | flip << 2 | kind
+        std::uint32_t slot; // layout slot << 1 | its pieces come falling
+        std::uint32_t map;  // next << 6 | (slope + 1) << 4 | flip << 2 | kind
         Int from, base;
     };
     // Reserved for 16 a mirror (the benchmark's random scenes have 14), not
@@ -81,7 +81,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
                 work_limit, poll,
                 [&](const piece_sweep::Swept<Int>& piece) {
                     ++place[piece.slot];
-                    swept.push_back(Waiting{piece.slot,
+                    swept.push_back(Waiting{piece.slot << 1 | std::uint32_t{piece.falling},
                                             piece.next << 6 |
                                                 static_cast<std::uint32_t>(piece.slope + 1) << 4 |
                                                 std::uint32_t{piece.flip} << 2 | piece.kind,
@@ -98,7 +98,6 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     // slot's next place, or its previous one where the sweep found the
     // slot's pieces in falling order (the sweep of d also serves d ^ 3).
     table.slots_.resize(std::size_t{n} * 4);
-    std::vector<bool> falling(std::size_t{n} * 4);
     std::size_t room = 0;
     for (std::uint32_t r = 0; r < n; ++r)
         for (unsigned d = 0; d < 4; ++d) {
@@ -109,8 +108,8 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
             const std::uint32_t m = table.laid_out_[r];
             table.slots_[m * 4 + d] = Cursor{static_cast<std::uint32_t>(room),
                                              static_cast<std::uint16_t>(count), table.tangent_[m]};
-            falling[r * 4 + d] = piece_sweep::falls(d == 0 || d == 3 ? 0 : 1, box(m).axis == 0);
-            place[r * 4 + d] = static_cast<std::uint32_t>(falling[r * 4 + d] ? room + count : room);
+            const bool falling = piece_sweep::falls(d == 0 || d == 3 ? 0 : 1, box(m).axis == 0);
+            place[r * 4 + d] = static_cast<std::uint32_t>(falling ? room + count : room);
             room += count + (count > 8 ? (count + 7) / 8 : 0);
         }
     table.count_ = swept.size();
@@ -128,14 +127,15 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
         // that moves on meanwhile costs nothing but the hint).
         if (i + 16 < swept.size()) {
             const Waiting& ahead = swept[i + 16];
-            const std::uint32_t to = place[ahead.slot];
+            const std::uint32_t to = place[ahead.slot >> 1];
             __builtin_prefetch(table.hops_.data() + std::min<std::size_t>(to, room - 1), 1);
             __builtin_prefetch(table.from_.data() + to, 1);
             __builtin_prefetch(table.slots_.data() + (ahead.map >> 6) * 4);
         }
         const Waiting& piece = swept[i];
         poll.on_gmp<Int>();
-        const std::uint32_t k = falling[piece.slot] ? --place[piece.slot] : place[piece.slot]++;
+        std::uint32_t& at = place[piece.slot >> 1];
+        const std::uint32_t k = (piece.slot & 1u) ? --at : at++;
         const unsigned kind = piece.map & 3u, flip = (piece.map >> 2) & flip_mask;
         Hop& hop = table.hops_[k];
         hop.base = piece.base;
@@ -143,7 +143,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
         hop.bits =
             static_cast<std::uint8_t>(flip | (kind << kind_shift) | (kind == 0 ? 0u : stop_bit));
         if (kind == 0) { // a reflection: the ray goes on from the next mirror's slot
-            const Cursor next = table.at(piece.map >> 6, (piece.slot % 4) ^ flip);
+            const Cursor next = table.at(piece.map >> 6, ((piece.slot >> 1) % 4) ^ flip);
             hop.next_begin = next.begin;
             hop.next_count = next.count;
             if (next.tangent) hop.bits |= next_tangent_bit;
@@ -156,6 +156,9 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     // would send rays astray), and the long ones indexed.
     for (std::uint32_t r = 0; r < n * 4; ++r) {
         poll();
+        // A mirror's four cursors share a line, scattered over slots_.
+        if (r % 4 == 0 && r / 4 + 8 < n)
+            __builtin_prefetch(table.slots_.data() + table.laid_out_[r / 4 + 8] * 4);
         const Cursor slot = table.slots_[table.laid_out_[r / 4] * 4 + r % 4];
         Int* from = table.from_.data() + slot.begin;
         for (std::uint32_t k = 1; k < slot.count; ++k)
