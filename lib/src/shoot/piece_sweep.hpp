@@ -240,35 +240,41 @@ bool sweep(std::uint32_t n, BoxOf&& box, Name&& name, unsigned d,
         std::uint32_t e, f;
         bool operator<(const Event& o) const { return a != o.a ? a < o.a : kind < o.kind; }
     };
-    // The insertions come sorted already (ranks follow first lines); the
-    // rest are sorted by line, put in kind order on each line, and merged in.
-    std::vector<Event> rest;
-    rest.reserve(std::size_t{n} + 2 * crossings.size());
-    for (std::uint32_t r = 0; r < n; ++r) rest.push_back(Event{Int(hi[r] + 1), 0, r, r});
+    // The insertions come sorted already (ranks follow first lines). The
+    // rest are sorted by line and put in kind order on each line, and the
+    // insertions merged in from the back: the rest fill the array's front,
+    // and its back, n places, stays ahead of the merge's read by the
+    // insertions left to write, so no second array is held.
+    std::vector<Event> events;
+    events.reserve(std::size_t{n} + std::size_t{n} + 2 * crossings.size());
+    for (std::uint32_t r = 0; r < n; ++r) events.push_back(Event{Int(hi[r] + 1), 0, r, r});
     for (const Crossing& c : crossings) {
         const Int a = Int(flip_y(box(c.horizontal).lo[1]) - flip_x(box(c.vertical).lo[0]));
-        rest.push_back(Event{a, 2, rank[c.vertical], rank[c.horizontal]});
-        rest.push_back(Event{Int(a + 1), 3, rank[c.vertical], rank[c.horizontal]});
+        events.push_back(Event{a, 2, rank[c.vertical], rank[c.horizontal]});
+        events.push_back(Event{Int(a + 1), 3, rank[c.vertical], rank[c.horizontal]});
     }
     rank = {};
-    sort_by_key(rest.begin(), rest.end(), [](const Event& x) { return x.a; });
-    for (auto run = rest.begin(); run != rest.end();) {
+    sort_by_key(events.begin(), events.end(), [](const Event& x) { return x.a; });
+    for (auto run = events.begin(); run != events.end();) {
         const auto end =
-            std::find_if(run, rest.end(), [&](const Event& x) { return x.a != run->a; });
+            std::find_if(run, events.end(), [&](const Event& x) { return x.a != run->a; });
         if (end - run > 1) std::sort(run, end);
         run = end;
     }
-    std::vector<Event> events;
-    events.reserve(std::size_t{n} + rest.size());
     {
-        std::uint32_t r = 0;
-        for (const Event& x : rest) {
-            for (; r < n && Event{lo[r], 1, r, r} < x; ++r) events.push_back(Event{lo[r], 1, r, r});
-            events.push_back(x);
+        std::size_t read = events.size();
+        events.resize(events.size() + n);
+        std::size_t write = events.size();
+        for (std::uint32_t r = n; r > 0;) {
+            const Event insertion{lo[r - 1], 1, r - 1, r - 1};
+            if (read > 0 && insertion < events[read - 1]) {
+                events[--write] = events[--read];
+            } else {
+                events[--write] = insertion;
+                --r;
+            }
         }
-        for (; r < n; ++r) events.push_back(Event{lo[r], 1, r, r});
     }
-    rest = {};
 
     // The open run of each mirror and direction: its first line and its map.
     std::vector<Int> run_from[2] = {std::vector<Int>(n), std::vector<Int>(n)};
