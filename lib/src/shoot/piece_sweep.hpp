@@ -84,8 +84,9 @@ struct Swept {
     // && keeps it free of jumps (the sweep asks it once a map recomputed,
     // unpredictably).
     bool same_map(const Swept& o) const {
+        const bool same_base = base == o.base; // a call on GMP integers
         return (kind == o.kind) & (flip == o.flip) & (next == o.next) & (slope == o.slope) &
-               (base == o.base);
+               same_base;
     }
 };
 
@@ -224,7 +225,8 @@ bool sweep(std::uint32_t n, BoxOf&& box, Name&& name, unsigned d,
         return [a](const Entry& x, const Entry& y) {
             const Int dx = x.depth(a), dy = y.depth(a);
             const bool vx = x.is(Entry::vertical), vy = y.is(Entry::vertical);
-            return (dx < dy) | ((dx == dy) & ((vx < vy) | ((vx == vy) & (x.e < y.e))));
+            const bool shallower = dx < dy, level = dx == dy;
+            return shallower | (level & ((vx < vy) | ((vx == vy) & (x.e < y.e))));
         };
     };
     // A mirror's position on line a: y on a vertical one, x on a horizontal.
