@@ -81,17 +81,28 @@ std::uint32_t locate_piece(const Int* key, std::uint32_t count, const Int& u) {
     }
 }
 
-// After a slot's `count` first positions, ending `key`: the first position
-// of each block of 8 when the slot has more than 8 (locate_piece's index).
-// Returns how many were added; the caller keeps any parallel array as long.
+// The positions a slot of `count` pieces adds after its own for its index
+// (locate_piece's): one a block of 8, when it has more than 8.
+inline std::size_t block_index_size(std::size_t count) {
+    return count <= 8 ? 0 : (count + 7) / 8;
+}
+
+// Writes that index after a slot's `count` first positions at `key`, which
+// has room for it.
+template <class Int>
+void write_block_index(Int* key, std::size_t count) {
+    for (std::size_t b = 0; b < block_index_size(count); ++b) key[count + b] = key[8 * b];
+}
+
+// After a slot's `count` first positions, ending `key`: its index. Returns
+// how many positions were added; the caller keeps any parallel array as
+// long.
 template <class Int>
 std::size_t add_block_index(std::vector<Int>& key, std::size_t begin, std::size_t count) {
-    if (count <= 8) return 0;
-    for (std::size_t k = begin; k < begin + count; k += 8) {
-        const Int first = key[k]; // not a reference into `key`, which may grow
-        key.push_back(first);
-    }
-    return (count + 7) / 8;
+    const std::size_t blocks = block_index_size(count);
+    key.resize(key.size() + blocks);
+    write_block_index(key.data() + begin, count);
+    return blocks;
 }
 
 } // namespace orthoray::shoot

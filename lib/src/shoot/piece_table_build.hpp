@@ -110,7 +110,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
                                              static_cast<std::uint16_t>(count), table.tangent_[m]};
             const bool falling = piece_sweep::falls(d == 0 || d == 3 ? 0 : 1, box(m).axis == 0);
             place[r * 4 + d] = static_cast<std::uint32_t>(falling ? room + count : room);
-            room += count + (count > 8 ? (count + 7) / 8 : 0);
+            room += count + block_index_size(count);
         }
     table.count_ = swept.size();
     // Exactly the room the pieces, their long slots' indexes and the search's
@@ -164,9 +164,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
         for (std::uint32_t k = 1; k < slot.count; ++k)
             if (!(from[k - 1] < from[k]))
                 throw std::logic_error("piece tables: a slot's pieces are out of order");
-        if (slot.count > 8)
-            for (std::uint32_t b = 0; b < (slot.count + 7u) / 8u; ++b)
-                from[slot.count + b] = from[8 * b];
+        write_block_index(from, slot.count);
     }
     return table;
 }
