@@ -78,6 +78,10 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
     out.target_reachable = out.to_lattice(scene.target(), out.target);
     if (out.target_reachable)
         for (int i = 0; i < out.dim; ++i) track(out.target[i]);
+    // The ray's 2^dim directions, built once: each element is asked about
+    // every one of them, and a direction is a vector of rationals.
+    std::vector<Vector> directions;
+    for (unsigned d = 0; d < (1u << out.dim); ++d) directions.push_back(out.direction(d));
     out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
         poll();
@@ -96,8 +100,8 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
         // negative component on scene axis active[i]: the acting rule is
         // asked about the scene direction itself, not a copy of it.
         le.acting = 0;
-        for (unsigned d = 0; d < (1u << out.dim); ++d)
-            if (engine::acts_on(e, out.direction(d))) le.acting |= 1u << d;
+        for (unsigned d = 0; d < directions.size(); ++d)
+            if (engine::acts_on(e, directions[d])) le.acting |= 1u << d;
         if (le.acting != (1u << (1u << out.dim)) - 1) out.one_sided = true;
         out.elements.push_back(std::move(le));
     }
