@@ -29,7 +29,7 @@ struct EmbreeAnswer {
     // As in orthoray::Answer: reflections before the target, the escape or
     // the absorption; the period for a cycle; the number performed for limit.
     std::uint64_t reflections = 0;
-    double setup_seconds = 0; // building the Embree scene (BVH)
+    double setup_seconds = 0; // converting the scene to floats, building Embree's BVH
 };
 
 // Why the Embree tracer cannot take this scene (splitters, one-sided or

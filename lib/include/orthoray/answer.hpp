@@ -75,7 +75,7 @@ struct Answer {
     struct Stats {
         // What the lattice engine built before or while stepping.
         struct Setup {
-            double seconds = 0;              // time spent building the grid and piece tables
+            double seconds = 0;              // scaling to the lattice, building the grid and tables
             std::size_t cells = 0;           // uniform grid cells
             std::size_t pieces = 0;          // piece-table pieces (0 when none were built)
             std::size_t two_step_pieces = 0; // their two-step table's (0 when none was built)

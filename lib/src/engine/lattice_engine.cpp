@@ -290,6 +290,7 @@ Answer run_with_int(const LatticeScene& ls, const SolveOptions& options) {
 
 Answer solve_on_lattice(const Scene& scene, const SolveOptions& options) {
     LatticeScene ls;
+    const auto begin = std::chrono::steady_clock::now();
     try {
         ls = lattice::make_lattice(scene, lattice::SetupPoll(options.monitor, 0));
     } catch (const lattice::SetupStopped& stopped) {
@@ -300,20 +301,28 @@ Answer solve_on_lattice(const Scene& scene, const SolveOptions& options) {
         answer.limit = stopped.limit;
         return answer;
     }
+    // Scaling the scene to the lattice is setup too: the time to the first
+    // reflection starts from the scene as read (as a float tracer's setup
+    // starts from converting it).
+    const double scaling = seconds_since(begin);
     // The narrowest type the bound proves safe, unless a wider one is asked for.
     const bool fits64 = ls.magnitude < lattice::int64_limit();
     const bool fits128 = ls.magnitude < lattice::int128_limit();
-    switch (options.arithmetic) {
-    case Arithmetic::automatic:
-        if (fits64) return run_with_int<std::int64_t>(ls, options);
-        [[fallthrough]];
-    case Arithmetic::int128:
-        if (fits128) return run_with_int<lattice::int128_t>(ls, options);
-        [[fallthrough]];
-    case Arithmetic::wide:
-        break;
-    }
-    return run_with_int<Integer>(ls, options);
+    Answer answer = [&] {
+        switch (options.arithmetic) {
+        case Arithmetic::automatic:
+            if (fits64) return run_with_int<std::int64_t>(ls, options);
+            [[fallthrough]];
+        case Arithmetic::int128:
+            if (fits128) return run_with_int<lattice::int128_t>(ls, options);
+            [[fallthrough]];
+        case Arithmetic::wide:
+            break;
+        }
+        return run_with_int<Integer>(ls, options);
+    }();
+    answer.stats.setup.seconds += scaling;
+    return answer;
 }
 
 } // namespace orthoray::engine

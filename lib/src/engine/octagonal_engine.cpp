@@ -189,8 +189,9 @@ Answer stopped_in_setup(Limit limit, ArithmeticUsed arithmetic) {
     return answer;
 }
 
+// `scaling`: the seconds make_octagonal_lattice took, counted in the setup.
 template <class Int>
-Answer run(const OctagonalLattice& lattice, const SolveOptions& options) {
+Answer run(const OctagonalLattice& lattice, const SolveOptions& options, double scaling) {
     const auto begin = Clock::now();
     std::optional<Run<Int>> run;
     try {
@@ -201,7 +202,8 @@ Answer run(const OctagonalLattice& lattice, const SolveOptions& options) {
     } catch (const lattice::SetupStopped& stopped) {
         return stopped_in_setup(stopped.limit, lattice::arithmetic_used(Int{}));
     }
-    run->answer().stats.setup.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+    run->answer().stats.setup.seconds =
+        scaling + std::chrono::duration<double>(Clock::now() - begin).count();
     return run->run();
 }
 
@@ -212,6 +214,7 @@ Answer solve_octagonal(const Scene& scene, const SolveOptions& options) {
         throw UnsupportedScene("--shooter grid, pieces and section do not take diagonal "
                                "elements; --shooter bvh (the default for them) does");
     std::optional<OctagonalLattice> scaled;
+    const auto begin = Clock::now();
     try {
         scaled.emplace(
             lattice::make_octagonal_lattice(scene, lattice::SetupPoll(options.monitor, 0)));
@@ -220,19 +223,20 @@ Answer solve_octagonal(const Scene& scene, const SolveOptions& options) {
         return stopped_in_setup(stopped.limit, ArithmeticUsed::none);
     }
     const OctagonalLattice& lattice = *scaled;
+    const double scaling = std::chrono::duration<double>(Clock::now() - begin).count();
     const bool fits64 = lattice.magnitude < lattice::int64_limit();
     const bool fits128 = lattice.magnitude < lattice::int128_limit();
     switch (options.arithmetic) {
     case Arithmetic::automatic:
-        if (fits64) return run<std::int64_t>(lattice, options);
+        if (fits64) return run<std::int64_t>(lattice, options, scaling);
         [[fallthrough]];
     case Arithmetic::int128:
-        if (fits128) return run<lattice::int128_t>(lattice, options);
+        if (fits128) return run<lattice::int128_t>(lattice, options, scaling);
         [[fallthrough]];
     case Arithmetic::wide:
         break;
     }
-    return run<Integer>(lattice, options);
+    return run<Integer>(lattice, options, scaling);
 }
 
 } // namespace orthoray::engine
