@@ -3,6 +3,8 @@
 // nothing here belongs in the library.
 #pragma once
 
+#include "orthoray/number.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -13,6 +15,14 @@
 #include <vector>
 
 namespace orthoray::bench {
+
+// A scene coordinate as the float baselines take it: mpq_get_d's value
+// (rounded toward zero), without its division when the rational is an
+// integer, as the benchmark's scenes' are. The baselines' setup times start
+// from the scene in memory, so their conversion is written to be fast too.
+inline double to_double(const Rational& x) {
+    return x.get_den() == 1 ? x.get_num().get_d() : x.get_d();
+}
 
 inline double seconds_since(std::chrono::steady_clock::time_point begin) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

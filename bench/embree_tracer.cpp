@@ -5,6 +5,8 @@
 // has a tolerance. Do not "fix" it; it is the thing being compared against.
 #include "embree_tracer.hpp"
 
+#include "bench_util.hpp"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -34,13 +36,20 @@ public:
             throw std::invalid_argument("the Embree tracer takes no scene with " + why);
         double size = 1;
         auto grow = [&](double x) { size = std::max(size, std::fabs(x)); };
-        for (const Element& e : scene.elements)
-            for (int j = 0; j < dim_; ++j) grow(e.lo[j].get_d()), grow(e.hi[j].get_d());
+        // Each element's corners lo and hi, every coordinate converted once.
+        const std::size_t n = scene.elements.size();
+        std::vector<std::array<double, 6>> box(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (int j = 0; j < dim_; ++j) {
+                box[i][j] = to_double(scene.elements[i].lo[j]);
+                box[i][3 + j] = to_double(scene.elements[i].hi[j]);
+                grow(box[i][j]), grow(box[i][3 + j]);
+            }
         double length = 0;
         for (int j = 0; j < dim_; ++j) {
-            start_[j] = scene.ray().start[j].get_d();
-            target_[j] = scene.target()[j].get_d();
-            dir_[j] = scene.ray().direction[j].get_d();
+            start_[j] = to_double(scene.ray().start[j]);
+            target_[j] = to_double(scene.target()[j]);
+            dir_[j] = to_double(scene.ray().direction[j]);
             length += dir_[j] * dir_[j];
             grow(start_[j]);
             grow(target_[j]);
@@ -53,7 +62,6 @@ public:
         scene_ = rtcNewScene(device_);
         rtcSetSceneFlags(scene_, robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
         RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_QUAD);
-        const std::size_t n = scene.elements.size();
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
             geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * n));
         auto* quads = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
@@ -66,12 +74,12 @@ public:
             std::array<std::array<double, 3>, 4> corner{};
             const int a = e.axis;
             const int u = dim_ == 3 ? (a + 1) % 3 : 1 - a, w = dim_ == 3 ? (a + 2) % 3 : 2;
-            const double ulo = e.lo[u].get_d(), uhi = e.hi[u].get_d();
-            const double wlo = dim_ == 3 ? e.lo[w].get_d() : -size;
-            const double whi = dim_ == 3 ? e.hi[w].get_d() : size;
+            const double ulo = box[i][u], uhi = box[i][3 + u];
+            const double wlo = dim_ == 3 ? box[i][w] : -size;
+            const double whi = dim_ == 3 ? box[i][3 + w] : size;
             const double us[4] = {ulo, uhi, uhi, ulo}, ws[4] = {wlo, wlo, whi, whi};
             for (int k = 0; k < 4; ++k) {
-                corner[k][a] = e.offset().get_d();
+                corner[k][a] = box[i][a]; // the offset: lo and hi agree on the normal axis
                 corner[k][u] = us[k];
                 corner[k][w] = ws[k];
                 for (int j = 0; j < 3; ++j)

@@ -6,6 +6,8 @@
 // the thing being compared against.
 #include "float_grid_tracer.hpp"
 
+#include "bench_util.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -37,10 +39,10 @@ public:
             Elem f;
             f.axis = e.axis;
             f.absorber = e.kind == ElementKind::absorber;
-            f.c = e.offset().get_d();
+            f.c = to_double(e.offset());
             for (int j = 0; j < D; ++j) {
-                f.lo[j] = e.lo[j].get_d();
-                f.hi[j] = e.hi[j].get_d();
+                f.lo[j] = to_double(e.lo[j]);
+                f.hi[j] = to_double(e.hi[j]);
                 grow(f.lo[j]);
                 grow(f.hi[j]);
             }
@@ -48,9 +50,9 @@ public:
         }
         double length = 0;
         for (int j = 0; j < D; ++j) {
-            start_[j] = scene.ray().start[j].get_d();
-            target_[j] = scene.target()[j].get_d();
-            dir_[j] = scene.ray().direction[j].get_d();
+            start_[j] = to_double(scene.ray().start[j]);
+            target_[j] = to_double(scene.target()[j]);
+            dir_[j] = to_double(scene.ray().direction[j]);
             length += dir_[j] * dir_[j];
             grow(start_[j]);
             grow(target_[j]);
