@@ -71,7 +71,7 @@ std::optional<PieceTable<Int>> PieceTable<Int>::build(const UniformGrid<Int, 2>&
     // while untouched reserved pages cost no memory.
     std::vector<Waiting> swept;
     swept.reserve(std::min<std::size_t>(max_pieces + 1, std::size_t{16} * n));
-    std::vector<std::uint32_t> place(std::size_t{n} * 4 + 1, 0); // pieces a slot, then its start
+    std::vector<std::uint32_t> place(std::size_t{n} * 4, 0); // pieces a slot, then its cursor
     // The sweep's work is a few elements looked at a piece on scenes like the
     // benchmark's; far more means mirrors piled on one line (see sweep).
     const std::size_t work_limit = max_pieces < SIZE_MAX / 32 ? 16 * (max_pieces + n) : SIZE_MAX;
