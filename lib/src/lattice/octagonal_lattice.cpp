@@ -119,7 +119,8 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
     // D: the lcm of every denominator in the scene.
     Integer D = 1;
     auto take = [&](const Vector& x) {
-        for (int j = 0; j < 2; ++j) D = lcm(D, x[j].get_den());
+        for (int j = 0; j < 2; ++j)
+            if (x[j].get_den() != 1) D = lcm(D, x[j].get_den());
     };
     take(scene.ray().start);
     take(scene.target());
@@ -132,8 +133,10 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
     out.scale = N * D;
 
     Integer largest = 0;
+    // An integer coordinate (the common case) is scaled without a division.
     auto scaled = [&](const Rational& x) {
-        Integer r = x.get_num() * (out.scale / x.get_den());
+        Integer r = x.get_den() == 1 ? Integer(x.get_num() * out.scale)
+                                     : Integer(x.get_num() * (out.scale / x.get_den()));
         if (abs_of(r) > largest) largest = abs_of(r);
         return r;
     };
@@ -141,6 +144,10 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
         out.start[j] = scaled(scene.ray().start[j]);
         out.target[j] = scaled(scene.target()[j]);
     }
+    // The eight directions, built once: each element is asked about every
+    // one of them, and a direction is a vector of rationals.
+    std::array<Vector, direction_count> directions;
+    for (unsigned d = 0; d < direction_count; ++d) directions[d] = out.direction(d);
     out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
         poll();
@@ -168,7 +175,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
         // The scale is positive, so the acting rule is asked about the
         // scene's own direction d.
         for (unsigned d = 0; d < direction_count; ++d)
-            if (engine::acts_on(e, out.direction(d))) le.acting |= 1u << d;
+            if (engine::acts_on(e, directions[d])) le.acting |= 1u << d;
         out.elements.push_back(std::move(le));
     }
     out.magnitude = largest * std::max(abs_of(a), abs_of(b));
