@@ -88,6 +88,20 @@ TEST_CASE("to_string writes canonical text", "[number]") {
         CHECK(orthoray::to_string(value_of(text)) == text);
 }
 
+TEST_CASE("is_integer is true exactly when the denominator is 1", "[number]") {
+    using orthoray::is_integer;
+    for (const char* text : {"0", "1", "-1", "7", "-7", "1000000000000000000000000"})
+        CHECK(is_integer(value_of(text)));
+    for (const char* text : {"1/2", "-1/2", "7/3", "1/1000000000000000000000000",
+                             "1000000000000000000000001/1000000000000000000000000"})
+        CHECK_FALSE(is_integer(value_of(text)));
+    // Read as it is stored: 4/2 before canonicalize has denominator 2.
+    CHECK_FALSE(is_integer(Rational(4, 2)));
+    // A denominator of more than one limb whose lowest limb is 1 (2^64 + 1).
+    Rational wide(Integer(1), Integer("18446744073709551617"));
+    CHECK_FALSE(is_integer(wide));
+}
+
 TEST_CASE("200-digit numbers round-trip through to_string", "[number]") {
     // 10^199 + 1 and 10^199 + 3: both have 200 digits, both are odd, and
     // they differ by 2, so they are coprime and num/den is already canonical.

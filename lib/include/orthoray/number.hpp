@@ -18,6 +18,13 @@ struct NumberToken {
     Rational value;
 };
 
+// Whether q is an integer (its denominator is 1), read inline: GMP's compare
+// is a call, and the setup asks this of every coordinate of a scene.
+inline bool is_integer(const Rational& q) {
+    const mpz_srcptr den = q.get_den_mpz_t();
+    return mpz_size(den) == 1 && mpz_sgn(den) > 0 && mpz_getlimbn(den, 0) == 1;
+}
+
 // Reads an integer (`-3`), a fraction (`7/2`) or an exact decimal (`0.125`,
 // `-2.`, `.5`), with an optional sign in front. Any size is fine.
 NumberToken read_number(std::string_view text);

@@ -14,11 +14,6 @@ Integer abs_of(const Integer& a) {
     return a < 0 ? Integer(-a) : a;
 }
 
-// Whether a = 1, read inline (mpz_cmp_ui is a call).
-bool is_one(mpz_srcptr a) {
-    return mpz_size(a) == 1 && mpz_sgn(a) > 0 && mpz_getlimbn(a, 0) == 1;
-}
-
 // a's value when it has at most one limb below 2^62, read inline (GMP's own
 // tests are calls): the common case of scene coordinates and scales.
 std::optional<std::int64_t> small_value(mpz_srcptr a) {
@@ -67,7 +62,7 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
     Integer D = 1;
     auto take_denominators = [&](const Vector& x) {
         for (int i = 0; i < out.dim; ++i)
-            if (!is_one(x[out.active[i]].get_den_mpz_t())) D = lcm(D, x[out.active[i]].get_den());
+            if (!is_integer(x[out.active[i]])) D = lcm(D, x[out.active[i]].get_den());
     };
     take_denominators(ray.start);
     take_denominators(scene.target());
@@ -88,7 +83,7 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
     for (std::size_t i = 0; i < small_scale.size(); ++i)
         small_scale[i] = small_value(out.scale[i].get_mpz_t());
     auto scaled = [&](const Rational& x, int i) {
-        if (!is_one(x.get_den_mpz_t())) return Integer(x.get_num() * (out.scale[i] / x.get_den()));
+        if (!is_integer(x)) return Integer(x.get_num() * (out.scale[i] / x.get_den()));
         const std::optional<std::int64_t> num = small_value(x.get_num_mpz_t());
         long product = 0;
         if (num && small_scale[i] && !__builtin_mul_overflow(*num, *small_scale[i], &product))

@@ -120,7 +120,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
     Integer D = 1;
     auto take = [&](const Vector& x) {
         for (int j = 0; j < 2; ++j)
-            if (x[j].get_den() != 1) D = lcm(D, x[j].get_den());
+            if (!is_integer(x[j])) D = lcm(D, x[j].get_den());
     };
     take(scene.ray().start);
     take(scene.target());
@@ -135,8 +135,8 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
     Integer largest = 0;
     // An integer coordinate (the common case) is scaled without a division.
     auto scaled = [&](const Rational& x) {
-        Integer r = x.get_den() == 1 ? Integer(x.get_num() * out.scale)
-                                     : Integer(x.get_num() * (out.scale / x.get_den()));
+        Integer r = is_integer(x) ? Integer(x.get_num() * out.scale)
+                                  : Integer(x.get_num() * (out.scale / x.get_den()));
         if (abs_of(r) > largest) largest = abs_of(r);
         return r;
     };

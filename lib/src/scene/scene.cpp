@@ -95,7 +95,10 @@ void Scene::add_diagonal(ElementKind kind, const Rational& x0, const Rational& y
 
 namespace {
 
+// (An integer, as most coordinates are, needs no gcd: it costs a GMP call
+// and an allocation per number, on every solve.)
 bool lowest(const Rational& q) {
+    if (is_integer(q)) return true;
     return sgn(q.get_den()) > 0 && Integer(gcd(q.get_num(), q.get_den())) == 1;
 }
 
