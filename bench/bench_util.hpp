@@ -21,7 +21,7 @@ namespace orthoray::bench {
 // integer, as the benchmark's scenes' are. The baselines' setup times start
 // from the scene in memory, so their conversion is written to be fast too.
 inline double to_double(const Rational& x) {
-    return x.get_den() == 1 ? x.get_num().get_d() : x.get_d();
+    return is_integer(x) ? x.get_num().get_d() : x.get_d();
 }
 
 inline double seconds_since(std::chrono::steady_clock::time_point begin) {
