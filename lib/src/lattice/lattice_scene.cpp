@@ -1,27 +1,16 @@
 #include "lattice/lattice_scene.hpp"
 
 #include "engine/event_rule.hpp"
+#include "lattice/scaling.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cstdint>
-#include <optional>
+#include <vector>
 
 namespace orthoray::lattice {
 namespace {
 
 Integer abs_of(const Integer& a) {
     return a < 0 ? Integer(-a) : a;
-}
-
-// a's value when it has at most one limb below 2^62, read inline (GMP's own
-// tests are calls): the common case of scene coordinates and scales.
-std::optional<std::int64_t> small_value(mpz_srcptr a) {
-    if (mpz_size(a) > 1) return std::nullopt;
-    const mp_limb_t limb = mpz_getlimbn(a, 0); // 0 for a = 0
-    if (limb >= (mp_limb_t{1} << 62)) return std::nullopt;
-    const auto value = static_cast<std::int64_t>(limb);
-    return mpz_sgn(a) < 0 ? -value : value;
 }
 
 } // namespace
@@ -75,21 +64,10 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
     for (int i = 0; i < out.dim; ++i) out.scale[i] = D * L / abs_of(u[out.active[i]]);
 
     // x * scale[i] is integral: every denominator divides D, which divides
-    // scale[i]. Computed as num * (scale / den), without a gcd; an integer
-    // coordinate of one limb times a scale of one limb in machine words when
-    // the product fits (GMP's product into a fresh integer allocates twice,
-    // a third of the scaling's time on large scenes).
-    std::array<std::optional<std::int64_t>, 3> small_scale; // 0 on the axes past dim
-    for (std::size_t i = 0; i < small_scale.size(); ++i)
-        small_scale[i] = small_value(out.scale[i].get_mpz_t());
-    auto scaled = [&](const Rational& x, int i) {
-        if (!is_integer(x)) return Integer(x.get_num() * (out.scale[i] / x.get_den()));
-        const std::optional<std::int64_t> num = small_value(x.get_num_mpz_t());
-        long product = 0;
-        if (num && small_scale[i] && !__builtin_mul_overflow(*num, *small_scale[i], &product))
-            return Integer(product);
-        return Integer(x.get_num() * out.scale[i]);
-    };
+    // scale[i] (the axes past dim have scale 0).
+    std::vector<Scaling> scaling;
+    for (const Integer& scale : out.scale) scaling.emplace_back(scale);
+    auto scaled = [&](const Rational& x, int i) { return scaling[i](x); };
     auto track = [&](const Integer& x) {
         if (mpz_cmpabs(x.get_mpz_t(), out.magnitude.get_mpz_t()) > 0) out.magnitude = abs_of(x);
     };

@@ -1,6 +1,7 @@
 #include "lattice/octagonal_lattice.hpp"
 
 #include "engine/event_rule.hpp"
+#include "lattice/scaling.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -133,11 +134,10 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
     out.scale = N * D;
 
     Integer largest = 0;
-    // An integer coordinate (the common case) is scaled without a division.
+    const Scaling scaling(out.scale);
     auto scaled = [&](const Rational& x) {
-        Integer r = is_integer(x) ? Integer(x.get_num() * out.scale)
-                                  : Integer(x.get_num() * (out.scale / x.get_den()));
-        if (abs_of(r) > largest) largest = abs_of(r);
+        Integer r = scaling(x);
+        if (mpz_cmpabs(r.get_mpz_t(), largest.get_mpz_t()) > 0) largest = abs_of(r);
         return r;
     };
     for (int j = 0; j < 2; ++j) {
