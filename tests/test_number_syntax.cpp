@@ -44,6 +44,16 @@ TEST_CASE("read_number reads integers with an optional sign", "[number]") {
     CHECK(value_of("123456789012345678901234567890") ==
           Rational(Integer("123456789012345678901234567890")));
     CHECK(orthoray::to_string(value_of("-0")) == "0");
+    // Up to 18 digits are read in a machine word, more on GMP: both sides of
+    // that line, and the largest values near it.
+    CHECK(value_of("999999999999999999") == Rational(Integer("999999999999999999")));
+    CHECK(value_of("-999999999999999999") == Rational(Integer("-999999999999999999")));
+    CHECK(value_of("1000000000000000000") == Rational(Integer("1000000000000000000")));
+    CHECK(value_of("-9223372036854775808") == Rational(Integer("-9223372036854775808")));
+    CHECK(value_of("18446744073709551617") == Rational(Integer("18446744073709551617")));
+    CHECK(value_of("000000000000000000012") == 12);
+    CHECK(value_of("-000000000000000012") == -12);
+    CHECK(value_of("123456789012345678").get_den() == 1);
 }
 
 TEST_CASE("read_number reads fractions in lowest terms", "[number]") {
