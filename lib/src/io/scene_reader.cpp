@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace orthoray {
@@ -97,8 +98,22 @@ private:
         if (!tokens_.empty()) read_statement();
     }
 
-    const Token& take(const std::string& expected) {
-        if (next_ == tokens_.size()) fail(end_column_, "found end of line, expected " + expected);
+    // What a statement expects next, as a message says it: a string, or a
+    // function that builds one. An element's tokens are described by
+    // concatenations, built only when one is reported: built for every
+    // token, they took a quarter of the time to read a large scene.
+    template <class What>
+    static std::string spelled(const What& what) {
+        if constexpr (std::is_invocable_v<const What&>)
+            return what();
+        else
+            return std::string(what);
+    }
+
+    template <class What>
+    const Token& take(const What& expected) {
+        if (next_ == tokens_.size())
+            fail(end_column_, "found end of line, expected " + spelled(expected));
         return tokens_[next_++];
     }
 
@@ -108,16 +123,26 @@ private:
                  "found " + quoted(tokens_[next_].text) + ", expected end of line");
     }
 
-    Rational take_number(const std::string& what) {
+    template <class What>
+    Rational take_number(const What& what) {
+        Rational value;
+        take_number(value, what);
+        return value;
+    }
+    // The same into `value`, which takes the number's limbs: no copy (a
+    // rational's move allocates, GMP's move leaving a fresh one behind).
+    template <class What>
+    void take_number(Rational& value, const What& what) {
         const Token& t = take(what);
         ReadStopCheck::poll();
         NumberToken n = read_number(t.text);
         if (n.status == NumberToken::Status::zero_denominator)
-            fail(t.column,
-                 "found " + quoted(t.text) + ", expected " + what + " with a nonzero denominator");
+            fail(t.column, "found " + quoted(t.text) + ", expected " + spelled(what) +
+                               " with a nonzero denominator");
         if (n.status != NumberToken::Status::ok)
-            fail(t.column, "found " + quoted(t.text) + ", expected " + what + ": " + number_forms);
-        return n.value;
+            fail(t.column,
+                 "found " + quoted(t.text) + ", expected " + spelled(what) + ": " + number_forms);
+        mpq_swap(value.get_mpq_t(), n.value.get_mpq_t());
     }
 
     // An axis letter, optionally followed at once by the side the element
@@ -169,20 +194,24 @@ private:
         expect_end_of_line();
     }
 
+    // The element is read in its place in the scene (capacity reserved):
+    // a rational's move allocates, so building it aside and moving it in
+    // allocated a dozen times more. A bad one ends the read, scene and all.
     void read_element(ElementKind kind) {
-        Element e;
+        Element& e = scene_.elements.emplace_back();
         e.kind = kind;
         e.line = line_;
-        const std::string axis_forms = "the normal axis (" + axis_letters() + ") of a " +
-                                       std::to_string(scene_.dim) + "D scene";
-        const Token& a = take("the normal axis (" + axis_letters() + ")" +
-                              (scene_.dim == 2 ? " or a diagonal (/ or \\)" : ""));
+        const Token& a = take([&] {
+            return "the normal axis (" + axis_letters() + ")" +
+                   (scene_.dim == 2 ? " or a diagonal (/ or \\)" : "");
+        });
         if (a.text.starts_with('/') || a.text.starts_with('\\')) return read_diagonal(e, a);
         if (!axis_of(a, e.axis, e.side)) {
             // A token that starts like an axis went wrong in its sign.
             const bool signed_axis =
                 a.text.size() > 1 && a.text[0] >= 'x' && a.text[0] < 'x' + scene_.dim;
-            fail(a.column, "found " + quoted(a.text) + ", expected " + axis_forms +
+            fail(a.column, "found " + quoted(a.text) + ", expected the normal axis (" +
+                               axis_letters() + ") of a " + std::to_string(scene_.dim) + "D scene" +
                                (signed_axis ? ", followed at most by one sign (+ or -)" : ""));
         }
         // 'x +' is a sign parted from its axis: say so rather than call the
@@ -192,25 +221,25 @@ private:
                  "found " + quoted(tokens_[next_].text) +
                      " after a space, expected the side's sign right after the axis letter (" +
                      axis_name(e.axis) + std::string(tokens_[next_].text) + ") or the offset");
-        std::string normal(1, axis_name(e.axis));
-        e.lo[e.axis] = e.hi[e.axis] = take_number("the offset " + normal + " = c");
+        const std::string normal(1, axis_name(e.axis));
+        take_number(e.lo[e.axis], [&] { return "the offset " + normal + " = c"; });
+        e.hi[e.axis] = e.lo[e.axis];
         for (int j = 0; j < scene_.dim; ++j) {
             if (j == e.axis) continue;
-            std::string name(1, axis_name(j));
-            const Token& t = take("'" + name + "' and its extent");
+            const std::string name(1, axis_name(j));
+            const Token& t = take([&] { return "'" + name + "' and its extent"; });
             if (t.text != name)
                 fail(t.column, "found " + quoted(t.text) + ", expected '" + name +
                                    "' (the other axes, in the order x, y, z)");
-            e.lo[j] = take_number("the lower end of the " + name + " extent");
+            take_number(e.lo[j], [&] { return "the lower end of the " + name + " extent"; });
             const Token& hi_token = tokens_[next_ < tokens_.size() ? next_ : 0];
-            e.hi[j] = take_number("the upper end of the " + name + " extent");
+            take_number(e.hi[j], [&] { return "the upper end of the " + name + " extent"; });
             if (!(e.lo[j] < e.hi[j]))
                 fail(hi_token.column,
                      "found " + quoted(hi_token.text) + " as the upper end of the " + name +
                          " extent, expected a number greater than " + to_string(e.lo[j]));
         }
         read_attenuation(e);
-        scene_.elements.push_back(std::move(e));
     }
 
     // `KIND / X0 Y0 X1 Y1` or `KIND \\ X0 Y0 X1 Y1` (docs/octagonal.md): 2D
@@ -249,7 +278,6 @@ private:
         read_attenuation(e);
         e.lo = {x0, std::min(y0, y1), Rational(0)};
         e.hi = {x1, std::max(y0, y1), Rational(0)};
-        scene_.elements.push_back(std::move(e));
     }
 
     // The optional trailing attributes of an element (docs/intensity.md):
