@@ -200,14 +200,23 @@ private:
                       std::string(text_.substr(start, number_end(start) - start)), start);
     }
 
+    // The index of the line holding `offset`, found by moving on from the
+    // line last asked about: values and keys start at rising offsets as the
+    // parse goes on (a binary search for each took a fifth of the time to
+    // read a large scene).
+    std::size_t line_index(std::size_t offset) const {
+        while (offset < line_starts_[last_line_]) --last_line_;
+        while (last_line_ + 1 < line_starts_.size() && line_starts_[last_line_ + 1] <= offset)
+            ++last_line_;
+        return last_line_;
+    }
     int line_of(std::size_t offset) const {
-        const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-        const auto index = static_cast<long long>(it - line_starts_.begin()) - 1;
+        const auto index = static_cast<long long>(line_index(offset));
         return static_cast<int>(std::min<long long>(index + first_line_, INT_MAX));
     }
     int column_of(std::size_t offset) const {
-        const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-        return static_cast<int>(std::min<std::size_t>(offset - *(it - 1) + 1, INT_MAX));
+        return static_cast<int>(
+            std::min<std::size_t>(offset - line_starts_[line_index(offset)] + 1, INT_MAX));
     }
 
     // Places a new value in its parent (or as the root) and returns it.
@@ -245,6 +254,7 @@ private:
     int first_line_;
     const char* furthest_;
     std::vector<std::size_t> line_starts_;
+    mutable std::size_t last_line_ = 0; // line_index's cursor
     JsonValue root_;
     // Open arrays and objects. Pointers stay valid: a parent's items only
     // grow while its last child is closed.
