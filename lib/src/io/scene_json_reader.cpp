@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "io/described.hpp"
 #include "io/json_document.hpp"
 
 #include <string>
@@ -131,26 +132,31 @@ private:
         fail(at.line, at.column, message);
     }
 
-    void expect_type(const JsonValue& value, JsonValue::Type type,
-                     const std::string& expected) const {
+    // `expected` and `what` here: a string or a function that builds one
+    // (io/described.hpp).
+    template <class What>
+    void expect_type(const JsonValue& value, JsonValue::Type type, const What& expected) const {
         if (value.type != type)
-            fail(value, "found " + io::describe(value) + ", expected " + expected);
+            fail(value, "found " + io::describe(value) + ", expected " + io::spelled(expected));
     }
 
     // Unknown and repeated keys are errors: a misspelt key would otherwise
     // silently change the scene.
     void check_keys(const JsonValue& object,
                     std::initializer_list<std::string_view> allowed) const {
-        std::string names;
-        for (std::string_view name : allowed)
-            names += (names.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+        auto names = [&] {
+            std::string list;
+            for (std::string_view name : allowed)
+                list += (list.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+            return list;
+        };
         for (std::size_t i = 0; i < object.keys.size(); ++i) {
             const std::string& key = object.keys[i];
             bool known = false;
             for (std::string_view name : allowed) known = known || key == name;
             if (!known)
                 fail(object.key_lines[i], object.key_columns[i],
-                     "found the key " + io::json_quoted(key) + ", expected one of " + names);
+                     "found the key " + io::json_quoted(key) + ", expected one of " + names());
             for (std::size_t k = 0; k < i; ++k)
                 if (object.keys[k] == key)
                     fail(object.key_lines[i], object.key_columns[i],
@@ -159,12 +165,12 @@ private:
         }
     }
 
-    const JsonValue& member(const JsonValue& object, std::string_view key,
-                            const std::string& what) const {
+    template <class What>
+    const JsonValue& member(const JsonValue& object, std::string_view key, const What& what) const {
         const JsonValue* value = object.find(key);
         if (!value)
             fail(object, "found an object without \"" + std::string(key) + "\", expected \"" +
-                             std::string(key) + "\": " + what);
+                             std::string(key) + "\": " + io::spelled(what));
         return *value;
     }
 
@@ -172,34 +178,43 @@ private:
     // number that is an integer (its literal text is read exactly, never as
     // a double). A JSON number with a fraction or exponent is refused, since
     // JSON tools read those as binary floating point: write it as a string.
-    Rational number(const JsonValue& value, const std::string& what) const {
+    template <class What>
+    Rational number(const JsonValue& value, const What& what) const {
+        Rational result;
+        number(result, value, what);
+        return result;
+    }
+    // The same into `result`, which takes the number's limbs (a rational's
+    // move allocates).
+    template <class What>
+    void number(Rational& result, const JsonValue& value, const What& what) const {
         if (value.type == JsonValue::Type::number) {
             const std::string_view text = value.text;
             const std::size_t digits = text.starts_with('-') ? 1 : 0;
             if (text.size() > digits &&
                 text.find_first_not_of("0123456789", digits) == std::string_view::npos) {
                 ReadStopCheck::poll();
-                Rational integer(mpz_class(std::string(text), 10));
-                return integer;
+                result = mpz_class(std::string(text), 10);
+                return;
             }
-            fail(value, "found the JSON number " + std::string(text) + ", expected " + what +
+            fail(value, "found the JSON number " + std::string(text) + ", expected " +
+                            io::spelled(what) +
                             ": a JSON number only when it is an integer; write " +
                             "fractions and decimals as strings (\"" + std::string(text) +
                             "\") so that no tool rounds them");
         }
         if (value.type != JsonValue::Type::string)
-            fail(value,
-                 "found " + io::describe(value) + ", expected " + what + ": " + rational_forms);
+            fail(value, "found " + io::describe(value) + ", expected " + io::spelled(what) + ": " +
+                            rational_forms);
         ReadStopCheck::poll();
-        NumberToken n = read_number(value.text);
+        NumberToken n = read_number(value.text); // in lowest terms
         if (n.status == NumberToken::Status::zero_denominator)
-            fail(value, "found " + io::describe(value) + ", expected " + what +
+            fail(value, "found " + io::describe(value) + ", expected " + io::spelled(what) +
                             " with a nonzero denominator");
         if (n.status != NumberToken::Status::ok)
-            fail(value,
-                 "found " + io::describe(value) + ", expected " + what + ": " + rational_forms);
-        n.value.canonicalize();
-        return n.value;
+            fail(value, "found " + io::describe(value) + ", expected " + io::spelled(what) + ": " +
+                            rational_forms);
+        mpq_swap(result.get_mpq_t(), n.value.get_mpq_t());
     }
 
     // An array of `dim` rationals.
@@ -216,14 +231,17 @@ private:
     }
 
     int axis_of(const JsonValue& value) const {
-        const std::string letters = scene_.dim == 2 ? "\"x\" or \"y\"" : "\"x\", \"y\" or \"z\"";
         if (value.type == JsonValue::Type::string && value.text.size() == 1 &&
             value.text[0] >= 'x' && value.text[0] < 'x' + scene_.dim)
             return value.text[0] - 'x';
+        const char* letters = scene_.dim == 2 ? "\"x\" or \"y\"" : "\"x\", \"y\" or \"z\"";
         fail(value, "found " + io::describe(value) + ", expected the normal axis " + letters +
                         " of a " + std::to_string(scene_.dim) + "D scene");
     }
 
+    // The element is read in its place in the scene (capacity reserved): a
+    // rational's move allocates, so building it aside and moving it in
+    // allocated a dozen times more. A bad one ends the read, scene and all.
     void read_element(const JsonValue& value) {
         expect_type(value, JsonValue::Type::object,
                     "an element {\"kind\": ..., \"axis\": ..., \"offset\": ..., \"extent\": ...}");
@@ -233,7 +251,7 @@ private:
         else
             check_keys(value, {"kind", "axis", "side", "offset", "extent", "reflectance",
                                "transmittance"});
-        Element e;
+        Element& e = scene_.elements.emplace_back();
         e.line = value.line;
         const char* kinds = "\"mirror\", \"absorber\" or \"splitter\"";
         const JsonValue& kind = member(value, "kind", kinds);
@@ -259,16 +277,15 @@ private:
         }
         e.axis = axis_of(member(value, "axis", "the normal axis"));
         const std::string normal(1, axis_name(e.axis));
-        e.lo[e.axis] = e.hi[e.axis] =
-            number(member(value, "offset", "the offset " + normal + " = c"),
-                   "the offset " + normal + " = c");
+        auto offset_form = [&] { return "the offset " + normal + " = c"; };
+        number(e.lo[e.axis], member(value, "offset", offset_form), offset_form);
+        e.hi[e.axis] = e.lo[e.axis];
 
         const JsonValue& extent = member(value, "extent", "the other axes' [lo, hi]");
-        const std::string extent_form = scene_.dim == 2
-                                            ? "an object like {\"y\": [\"0\", \"5\"]}"
-                                            : "an object like {\"x\": [\"0\", \"4\"], \"y\": "
-                                              "[\"0\", \"4\"]}";
-        expect_type(extent, JsonValue::Type::object, extent_form);
+        expect_type(extent, JsonValue::Type::object,
+                    scene_.dim == 2 ? "an object like {\"y\": [\"0\", \"5\"]}"
+                                    : "an object like {\"x\": [\"0\", \"4\"], \"y\": "
+                                      "[\"0\", \"4\"]}");
         std::string other_axes[2];
         std::size_t count = 0;
         for (int j = 0; j < scene_.dim; ++j)
@@ -280,21 +297,23 @@ private:
         for (int j = 0; j < scene_.dim; ++j) {
             if (j == e.axis) continue;
             const std::string name(1, axis_name(j));
-            const JsonValue& range = member(extent, name, "the " + name + " extent as [lo, hi]");
+            const JsonValue& range =
+                member(extent, name, [&] { return "the " + name + " extent as [lo, hi]"; });
             if (range.type != JsonValue::Type::array || range.items.size() != 2)
                 fail(range, "found " + io::describe(range) +
                                 (range.type == JsonValue::Type::array
                                      ? " of " + std::to_string(range.items.size()) + " values"
                                      : "") +
                                 ", expected the " + name + " extent as [lo, hi]");
-            e.lo[j] = number(range.items[0], "the lower end of the " + name + " extent");
-            e.hi[j] = number(range.items[1], "the upper end of the " + name + " extent");
+            number(e.lo[j], range.items[0],
+                   [&] { return "the lower end of the " + name + " extent"; });
+            number(e.hi[j], range.items[1],
+                   [&] { return "the upper end of the " + name + " extent"; });
             if (!(e.lo[j] < e.hi[j]))
                 fail(range.items[1],
                      "found " + io::describe(range.items[1]) + " as the upper end of the " + name +
                          " extent, expected a number greater than " + to_string(e.lo[j]));
         }
-        scene_.elements.push_back(std::move(e));
     }
 
     // {"kind": ..., "diagonal": "/" or "\\", "from": [X0, Y0], "to": [X1, Y1]}
@@ -329,7 +348,6 @@ private:
                                   (e.diagonal == Diagonal::rising ? "+1" : "-1") + ")");
         e.lo = {a[0], std::min(a[1], b[1]), Rational(0)};
         e.hi = {b[0], std::max(a[1], b[1]), Rational(0)};
-        scene_.elements.push_back(std::move(e));
     }
 
     const std::string& file_;

@@ -6,13 +6,13 @@
 
 #include "orthoray/grid.hpp"
 
+#include "io/described.hpp"
 #include "io/quoted_token.hpp"
 #include "io/text_line.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <optional>
-#include <type_traits>
 #include <vector>
 
 namespace orthoray {
@@ -98,22 +98,12 @@ private:
         if (!tokens_.empty()) read_statement();
     }
 
-    // What a statement expects next, as a message says it: a string, or a
-    // function that builds one. An element's tokens are described by
-    // concatenations, built only when one is reported: built for every
-    // token, they took a quarter of the time to read a large scene.
-    template <class What>
-    static std::string spelled(const What& what) {
-        if constexpr (std::is_invocable_v<const What&>)
-            return what();
-        else
-            return std::string(what);
-    }
-
+    // `expected` and `what`: a string or a function that builds one
+    // (io/described.hpp).
     template <class What>
     const Token& take(const What& expected) {
         if (next_ == tokens_.size())
-            fail(end_column_, "found end of line, expected " + spelled(expected));
+            fail(end_column_, "found end of line, expected " + io::spelled(expected));
         return tokens_[next_++];
     }
 
@@ -137,11 +127,11 @@ private:
         ReadStopCheck::poll();
         NumberToken n = read_number(t.text);
         if (n.status == NumberToken::Status::zero_denominator)
-            fail(t.column, "found " + quoted(t.text) + ", expected " + spelled(what) +
+            fail(t.column, "found " + quoted(t.text) + ", expected " + io::spelled(what) +
                                " with a nonzero denominator");
         if (n.status != NumberToken::Status::ok)
-            fail(t.column,
-                 "found " + quoted(t.text) + ", expected " + spelled(what) + ": " + number_forms);
+            fail(t.column, "found " + quoted(t.text) + ", expected " + io::spelled(what) + ": " +
+                               number_forms);
         mpq_swap(value.get_mpq_t(), n.value.get_mpq_t());
     }
 
