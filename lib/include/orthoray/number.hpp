@@ -28,6 +28,10 @@ inline bool is_integer(const Rational& q) {
 // Reads an integer (`-3`), a fraction (`7/2`) or an exact decimal (`0.125`,
 // `-2.`, `.5`), with an optional sign in front. Any size is fine.
 NumberToken read_number(std::string_view text);
+// The same into `value`, which is set (in lowest terms) only when the status
+// is ok: a reader that fills a scene's numbers in place allocates nothing
+// for a short integer.
+NumberToken::Status read_number(std::string_view text, Rational& value);
 
 // Canonical text of a rational: `7`, `-7/2`. Inverse of read_number.
 std::string to_string(const Rational& value);

@@ -184,8 +184,7 @@ private:
         number(result, value, what);
         return result;
     }
-    // The same into `result`, which takes the number's limbs (a rational's
-    // move allocates).
+    // The same into `result`, in place (no temporary to allocate and free).
     template <class What>
     void number(Rational& result, const JsonValue& value, const What& what) const {
         if (value.type == JsonValue::Type::number) {
@@ -207,14 +206,13 @@ private:
             fail(value, "found " + io::describe(value) + ", expected " + io::spelled(what) + ": " +
                             rational_forms);
         ReadStopCheck::poll();
-        NumberToken n = read_number(value.text); // in lowest terms
-        if (n.status == NumberToken::Status::zero_denominator)
+        const NumberToken::Status status = read_number(value.text, result); // in lowest terms
+        if (status == NumberToken::Status::zero_denominator)
             fail(value, "found " + io::describe(value) + ", expected " + io::spelled(what) +
                             " with a nonzero denominator");
-        if (n.status != NumberToken::Status::ok)
+        if (status != NumberToken::Status::ok)
             fail(value, "found " + io::describe(value) + ", expected " + io::spelled(what) + ": " +
                             rational_forms);
-        mpq_swap(result.get_mpq_t(), n.value.get_mpq_t());
     }
 
     // An array of `dim` rationals.

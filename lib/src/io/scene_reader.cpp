@@ -119,20 +119,18 @@ private:
         take_number(value, what);
         return value;
     }
-    // The same into `value`, which takes the number's limbs: no copy (a
-    // rational's move allocates, GMP's move leaving a fresh one behind).
+    // The same into `value`, in place (no temporary to allocate and free).
     template <class What>
     void take_number(Rational& value, const What& what) {
         const Token& t = take(what);
         ReadStopCheck::poll();
-        NumberToken n = read_number(t.text);
-        if (n.status == NumberToken::Status::zero_denominator)
+        const NumberToken::Status status = read_number(t.text, value);
+        if (status == NumberToken::Status::zero_denominator)
             fail(t.column, "found " + quoted(t.text) + ", expected " + io::spelled(what) +
                                " with a nonzero denominator");
-        if (n.status != NumberToken::Status::ok)
+        if (status != NumberToken::Status::ok)
             fail(t.column, "found " + quoted(t.text) + ", expected " + io::spelled(what) + ": " +
                                number_forms);
-        mpq_swap(value.get_mpq_t(), n.value.get_mpq_t());
     }
 
     // An axis letter, optionally followed at once by the side the element
