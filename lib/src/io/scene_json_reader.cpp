@@ -239,7 +239,7 @@ private:
 
     // The element is read in its place in the scene (capacity reserved): a
     // rational's move allocates, so building it aside and moving it in
-    // allocated a dozen times more. A bad one ends the read, scene and all.
+    // cost a dozen allocations more. A bad one ends the read, scene and all.
     void read_element(const JsonValue& value) {
         expect_type(value, JsonValue::Type::object,
                     "an element {\"kind\": ..., \"axis\": ..., \"offset\": ..., \"extent\": ...}");

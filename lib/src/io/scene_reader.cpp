@@ -183,8 +183,8 @@ private:
     }
 
     // The element is read in its place in the scene (capacity reserved):
-    // a rational's move allocates, so building it aside and moving it in
-    // allocated a dozen times more. A bad one ends the read, scene and all.
+    // building it aside and moving it in cost a dozen allocations more (a
+    // rational's move allocates). A bad one ends the read, scene and all.
     void read_element(ElementKind kind) {
         Element& e = scene_.elements.emplace_back();
         e.kind = kind;
