@@ -193,7 +193,7 @@ private:
             if (text.size() > digits &&
                 text.find_first_not_of("0123456789", digits) == std::string_view::npos) {
                 ReadStopCheck::poll();
-                result = mpz_class(std::string(text), 10);
+                read_number(text, result); // digits with an optional '-': always well formed
                 return;
             }
             fail(value, "found the JSON number " + std::string(text) + ", expected " +

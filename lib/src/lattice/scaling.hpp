@@ -42,8 +42,6 @@ public:
         return Integer(x.get_num() * scale_);
     }
 
-    const Integer& scale() const { return scale_; }
-
 private:
     Integer scale_;
     std::optional<std::int64_t> small_scale_;
