@@ -13,6 +13,7 @@
 #include "bench_util.hpp"
 #include "scenes.hpp"
 
+#include "orthoray/allocator_policy.hpp"
 #include "orthoray/generate.hpp"
 #include "orthoray/solve.hpp"
 
@@ -301,6 +302,7 @@ int run(const Options& o) {
 } // namespace orthoray::bench
 
 int main(int argc, char** argv) {
+    orthoray::keep_freed_memory(); // as the command-line tool does
     try {
         return orthoray::bench::run(orthoray::bench::parse(argc, argv));
     } catch (const std::exception& e) {

@@ -12,6 +12,8 @@
 #include "orthoray_bench.hpp"
 #include "parse_options.hpp"
 
+#include "orthoray/allocator_policy.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -127,6 +129,9 @@ void print_machine() {
 
 int main(int argc, char** argv) {
     using namespace orthoray::bench;
+    // As the command-line tool does: every contender (each run forks from
+    // here) gets the same allocator policy.
+    orthoray::keep_freed_memory();
     try {
         const Options o = parse(argc, argv);
         if (o.smoke) return smoke();

@@ -1,5 +1,6 @@
 // orthoray: decide whether a ray among axis-aligned mirrors reaches a point.
 #include "app.hpp"
+#include "orthoray/allocator_policy.hpp"
 #include "orthoray/parse.hpp"
 #include "output_file.hpp"
 
@@ -47,6 +48,7 @@ std::string help_command(int argc, char** argv, const CLI::App& app) {
 
 int main(int argc, char** argv) {
     using namespace orthoray::cli;
+    orthoray::keep_freed_memory();
     mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
     // A closed pipe or a file size limit must be a failed write, reported,
     // not a silent death by SIGPIPE or SIGXFSZ in the middle of a file.

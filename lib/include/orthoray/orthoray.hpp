@@ -2,17 +2,18 @@
 // this one is for programs that want everything.
 #pragma once
 
-#include "orthoray/answer.hpp"        // what a solver says: reason, reflections, what ran
-#include "orthoray/answer_json.hpp"   // the answer as solve --json prints it
-#include "orthoray/bounds.hpp"        // bounds on the states a trajectory can visit
-#include "orthoray/build_info.hpp"    // versions of the library and of what it was built with
-#include "orthoray/certificate.hpp"   // writing, reading and verifying certificates
-#include "orthoray/exchange.hpp"      // the interval exchange of a 2D scene, and its induction
-#include "orthoray/generate.hpp"      // instance families
-#include "orthoray/grid.hpp"          // grid mirror mazes (.grid) and their scenes
-#include "orthoray/number.hpp"        // exact integers and rationals
-#include "orthoray/parse.hpp"         // reading scene files
-#include "orthoray/pieces.hpp"        // the 2D piece tables, printable
+#include "orthoray/allocator_policy.hpp" // for programs: malloc keeps freed memory
+#include "orthoray/answer.hpp"           // what a solver says: reason, reflections, what ran
+#include "orthoray/answer_json.hpp"      // the answer as solve --json prints it
+#include "orthoray/bounds.hpp"           // bounds on the states a trajectory can visit
+#include "orthoray/build_info.hpp"       // versions of the library and of what it was built with
+#include "orthoray/certificate.hpp"      // writing, reading and verifying certificates
+#include "orthoray/exchange.hpp"         // the interval exchange of a 2D scene, and its induction
+#include "orthoray/generate.hpp"         // instance families
+#include "orthoray/grid.hpp"             // grid mirror mazes (.grid) and their scenes
+#include "orthoray/number.hpp"           // exact integers and rationals
+#include "orthoray/parse.hpp"            // reading scene files
+#include "orthoray/pieces.hpp"           // the 2D piece tables, printable
 #include "orthoray/puzzle.hpp"        // Lazor levels: reading, their scenes, the placement search
 #include "orthoray/puzzle_pieces.hpp" // the placement search in independent pieces (threads, MPI)
 #include "orthoray/realistic.hpp"     // intensity-limited illumination (Isobe et al.)
