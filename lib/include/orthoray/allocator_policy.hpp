@@ -18,7 +18,7 @@ namespace orthoray {
 // random mirrors a solve by induction took some 15,000 of them (about a fifth
 // of its time), and at 10^5 mirrors the 2D tables' setup some 47,000.
 // Served from the heap and never trimmed, freed blocks are reused instead
-// (docs/performance.md, "Memory the process keeps"). Peak memory is the
+// (docs/limits.md, "Memory the process keeps"). Peak memory is the
 // same high-water mark; it is simply not handed back before the process
 // ends.
 //
