@@ -4,12 +4,14 @@
 # 3D (speed, setup, peak memory, where Embree's path leaves the exact one),
 # then the induction engine on 10^3..10^5 random mirrors with coordinates to
 # 10^18, CPU time by perf stat when it is installed. Run it on an idle
-# machine; it takes about three minutes on 2 cores.
+# machine; it takes about four minutes on 2 cores.
 #
 #   bench/against_embree.sh [BUILD_DIR] [OUT_DIR]
 #
-# Writes OUT_DIR/embree.md and OUT_DIR/induction-narrow.md (default
-# bench/results); the machine and load are in both files.
+# Writes OUT_DIR/embree.md, OUT_DIR/induction-narrow.md and OUT_DIR/memory.md
+# (default bench/results); the machine and load are in each file. The last
+# is the machine's load latency and cost of fresh memory, what bounds the
+# rows of 10^5 elements (bench/README.md, "The machine's memory").
 set -euo pipefail
 build=${1:-build}
 out=${2:-bench/results}
@@ -45,4 +47,9 @@ machine() {
     echo
     echo "At the end: load average $(cut -d' ' -f1-3 /proc/loadavg)."
 } >"$out/induction-narrow.md"
-echo "wrote $out/embree.md and $out/induction-narrow.md"
+{
+    machine
+    echo
+    "$build/bench/orthoray_bench" --mode memory --runs 3 | sed -n '/^## /,$p'
+} >"$out/memory.md"
+echo "wrote $out/embree.md, $out/induction-narrow.md and $out/memory.md"

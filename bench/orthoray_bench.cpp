@@ -74,7 +74,7 @@ Options parse(int argc, char** argv) {
     app.add_flag("--quick", o.quick, "the whole program in about a minute");
     app.add_flag("--smoke", o.smoke, "the ctest bench_smoke check; prints one line");
     app.add_option("--mode", o.mode, "one part only (default all)")
-        ->check(CLI::IsMember({"all", "throughput", "disagree", "billion", "embree"}));
+        ->check(CLI::IsMember({"all", "throughput", "disagree", "billion", "embree", "memory"}));
     app.add_option("--csv", o.csv,
                    "also write the tables as CSV (FILE, FILE-billion.csv, "
                    "FILE-disagreement.csv)");
@@ -144,6 +144,7 @@ int main(int argc, char** argv) {
         if (all || o.mode == "billion") failures += billion(o);
         if (all || o.mode == "disagree") failures += disagreements(o);
         if (all || o.mode == "embree") failures += embree_baseline(o);
+        if (all || o.mode == "memory") failures += memory_ladder(o);
         std::printf("Load average at the end: %s.\n", load_average().c_str());
         return failures == 0 ? 0 : 1;
     } catch (const std::exception& e) {

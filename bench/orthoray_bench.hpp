@@ -15,7 +15,7 @@ namespace orthoray::bench {
 
 struct Options {
     bool quick = false, smoke = false;
-    std::string mode = "all"; // all, throughput, disagree, billion, embree
+    std::string mode = "all"; // all, throughput, disagree, billion, embree, memory
     std::string csv;          // throughput table; -disagreement / -billion next to it
     std::string write_scenes; // a directory to write the benchmark scenes to, as .scene files
     std::string wrong_scene = std::string(ORTHORAY_BENCH_DIR) + "/float-wrong.scene";
@@ -43,6 +43,9 @@ int embree_baseline(const Options& o);
 // reflections. Calls `fail` for each problem and returns the scenes compared
 // (0 without Embree).
 int embree_smoke(const std::function<void(const std::string&)>& fail);
+// The machine's load latency by footprint and its cost of fresh memory
+// (memory_ladder.cpp): what bounds the rows of 10^5 elements.
+int memory_ladder(const Options& o);
 // The ctest bench_smoke check (smoke.cpp): quick, and fails on a real problem.
 int smoke();
 
