@@ -178,6 +178,67 @@ TEST_CASE("max_steps caps the events of one endless stretch", "[illumination]") 
     for (const TargetAnswer& t : a.targets) CHECK(t.status == Status::unknown);
 }
 
+TEST_CASE("a cap reports a target at a ray's start, and one passed once its count is final",
+          "[illumination]") {
+    // Found by a conformance audit against optics.md ("a resource limit ...
+    // reports the targets lit so far"). Both engines that honour the cap
+    // must say the same.
+    auto capped = [](const char* text, std::uint64_t cap, Engine engine) {
+        SolveOptions options;
+        options.max_steps = cap;
+        options.engine = engine;
+        return solve(read_scene(text), options);
+    };
+    for (const Engine engine : {Engine::automatic, Engine::reference}) {
+        INFO("engine " << static_cast<int>(engine));
+        // The target is ray 1's start: lit with 0 reflections before any step.
+        const char* at_start = "dim 2\nray 0 1 1 0\nray 5 5 0 1\ntarget 0 1\n";
+        const Answer a = capped(at_start, 0, engine);
+        CHECK(a.reason == Reason::lit);
+        REQUIRE(a.targets.size() == 1);
+        CHECK(a.targets[0].status == Status::lit);
+        CHECK(a.targets[0].reflections == 0);
+        CHECK(a.targets[0].ray == 1);
+        // Between two mirrors, the ray passes the target on its second
+        // segment (1 reflection) and nothing waits: the answer is complete
+        // after two events, although the stretch bounces on for ever.
+        const char* between = "dim 2\nmirror x 0 y 0 1\nmirror x 1 y 0 1\n"
+                              "splitter y 50 x 50 51\nray 1/2 1/2 1 0\ntarget 0 1/2\n";
+        for (const std::uint64_t cap : {2u, 3u, 1000u}) {
+            const Answer b = capped(between, cap, engine);
+            CHECK(b.reason == Reason::lit);
+            CHECK(b.targets[0].reflections == 1);
+            CHECK(b.targets[0].ray == 1);
+        }
+        const Answer c = capped(between, 1, engine);
+        CHECK(c.reason == Reason::limit);
+        CHECK(c.targets[0].status == Status::unknown);
+    }
+    // The branch search in the middle of one long stretch: the segment
+    // after 5 reflections passes the target, and once it is stepped (event
+    // 6) the count is final, since later segments come after more
+    // reflections and nothing else waits; with 5 events it is unknown.
+    const char* channel = "dim 2\nmirror x 0 y -100 100\nmirror x 1 y -100 100\n"
+                          "splitter y 500 x 50 51\nray 1/2 0 1 1\ntarget 1/2 5\n";
+    const Answer early = capped(channel, 5, Engine::automatic);
+    CHECK(early.reason == Reason::limit);
+    CHECK(early.targets[0].status == Status::unknown);
+    const Answer late = capped(channel, 7, Engine::automatic);
+    CHECK(late.reason == Reason::lit);
+    CHECK(late.targets[0].reflections == 5);
+    CHECK(late.stats.illumination.events <= 7);
+    // With a second target no branch reaches, the cap ends the run; the
+    // first target's count is final all the same (the stretch cut short
+    // can only offer 6 reflections or more), so it is reported.
+    const std::string two = std::string(channel) + "target 100 100\n";
+    const Answer cut = capped(two.c_str(), 20, Engine::automatic);
+    CHECK(cut.reason == Reason::limit);
+    REQUIRE(cut.targets.size() == 2);
+    CHECK(cut.targets[0].status == Status::lit);
+    CHECK(cut.targets[0].reflections == 5);
+    CHECK(cut.targets[1].status == Status::unknown);
+}
+
 TEST_CASE("the branch state set keeps states exactly and compactly", "[illumination]") {
     Scene s = read_scene("dim 3\nray 0 0 0 1 2 3\nray 0 0 0 -2 -4 -6\ntarget 1 1 1\n");
     engine::ByteBudget budget(std::nullopt);

@@ -293,16 +293,33 @@ TEST_CASE("a single ray with an intensity gets an intensity certificate, partial
     CHECK(c.answer.targets[0].status == Status::lit);
     CHECK(*c.answer.targets[0].intensity == 64);
     CHECK(check(scene, c.text).valid);
-    // Cut short before anything is expanded: nothing is proven.
-    std::ostringstream out;
-    CertificateWriter writer(out, scene);
-    SolveOptions options;
-    options.min_intensity = Integer(0);
-    options.max_steps = 0;
-    writer.attach(options);
-    const Answer capped = engine::solve_intensity(scene, options);
-    writer.finish(capped);
-    const Verdict partial = check(scene, out.str());
+    // Cut short before any event: the target at the ray's start is lit all
+    // the same (0 reflections, the ray's own intensity), and the
+    // certificate says so completely.
+    auto capped_certificate = [](const Scene& s, Answer& answer) {
+        std::ostringstream out;
+        CertificateWriter writer(out, s);
+        SolveOptions options;
+        options.min_intensity = Integer(0);
+        options.max_steps = 0;
+        writer.attach(options);
+        answer = engine::solve_intensity(s, options);
+        writer.finish(answer);
+        return out.str();
+    };
+    Answer at_start;
+    const std::string whole = capped_certificate(scene, at_start);
+    CHECK(at_start.reason == Reason::lit);
+    CHECK(at_start.targets[0].reflections == 0);
+    CHECK(*at_start.targets[0].intensity == 64);
+    CHECK(check(scene, whole).valid);
+    // A target a step away: nothing is proven.
+    Scene away = scene;
+    away.targets[0] = Vector{Rational(2), Rational(0), Rational(0)};
+    Answer capped;
+    const Verdict partial = check(away, capped_certificate(away, capped));
+    CHECK(capped.reason == Reason::limit);
+    CHECK(capped.targets[0].status == Status::unknown);
     CHECK_FALSE(partial.valid);
     CHECK(partial.message.find("partial") != std::string::npos);
 }

@@ -95,12 +95,20 @@ private:
     using Clock = std::chrono::steady_clock;
 
     void search() {
-        for (std::size_t r = 0; r < scene_.rays.size(); ++r)
-            if (!reach(scene_.rays[r].start, scene_.rays[r].direction,
-                       {0, static_cast<std::uint32_t>(r + 1)}, no_parent)) {
+        for (std::size_t r = 0; r < scene_.rays.size(); ++r) {
+            const Label start{0, static_cast<std::uint32_t>(r + 1)};
+            const std::optional<std::uint32_t> state =
+                reach(scene_.rays[r].start, scene_.rays[r].direction, start, no_parent);
+            if (!state) {
                 limit_ = Limit::memory;
                 return;
             }
+            // A target at a ray's start is lit with 0 reflections before
+            // any event is stepped, so even a cap of 0 steps reports it (it
+            // is final once no ray numbered lower is still waiting).
+            for (std::size_t t = 0; t < best_.size(); ++t)
+                if (scene_.targets[t] == scene_.rays[r].start) offer(t, start, *state);
+        }
         for (;;) {
             const std::optional<Waiting> next = pop();
             if (!next) return; // every reachable branch state is expanded
@@ -112,8 +120,32 @@ private:
             records_[next->state].settled = 1;
             ++expanded_;
             if (!expand(next->state, next->label)) return;
+            if (finished_) return;
             pending_.reset();
         }
+    }
+
+    // Target t is passed with `label` by the stretch of branch state `branch`:
+    // kept when it is the least so far.
+    void offer(std::size_t t, Label label, std::uint32_t branch) {
+        Candidate& c = best_[t];
+        if (c.found && !(label < c.label)) return;
+        if (!c.found) --unfound_;
+        c = {true, label, branch};
+        if (unfound_ == 0) {
+            worst_ = best_.front().label;
+            for (const Candidate& other : best_) worst_ = std::max(worst_, other.label);
+        }
+    }
+
+    // Every target has a candidate no later stretch can beat, with `open`
+    // the least label the stretch being walked can still offer: without a
+    // certificate to write the search is done, even in the middle of a
+    // stretch that would run for 10^70 events. The heap's top bounds every
+    // waiting label from below (an entry left behind only lowers it).
+    bool done_within(const Label& open) const {
+        if (options_.illumination_observer || unfound_ != 0 || open < worst_) return false;
+        return queue_.empty() || !(queue_.front().label < worst_);
     }
 
     // The least waiting entry whose state is not settled and still carries
@@ -145,24 +177,25 @@ private:
         return !limit_;
     }
 
-    // Reaches (p, v) with `label` from `parent`; false when the budget
-    // refuses room for it.
-    bool reach(const Vector& p, const Vector& v, Label label, std::uint32_t parent) {
-        if (!budget_.make_room(records_) || !budget_.make_room(queue_)) return false;
+    // Reaches (p, v) with `label` from `parent`: its branch state's number,
+    // or nullopt when the budget refuses room for it.
+    std::optional<std::uint32_t> reach(const Vector& p, const Vector& v, Label label,
+                                       std::uint32_t parent) {
+        if (!budget_.make_room(records_) || !budget_.make_room(queue_)) return std::nullopt;
         const std::optional<BranchStateSet::Inserted> at = states_.insert(p, v);
-        if (!at) return false;
+        if (!at) return std::nullopt;
         if (at->added) {
             records_.push_back({label.reflections, label.ray, 0, parent});
         } else {
             Record& r = records_[at->index];
-            if (r.settled || !(label < Label{r.reflections, r.ray})) return true;
+            if (r.settled || !(label < Label{r.reflections, r.ray})) return at->index;
             r.reflections = label.reflections;
             r.ray = label.ray;
             r.parent = parent;
         }
         queue_.push_back({label, at->index});
         std::push_heap(queue_.begin(), queue_.end(), std::greater<>{});
-        return true;
+        return at->index;
     }
 
     // Walks the stretch of branch state `b`; false (limit_ set) when a limit
@@ -173,6 +206,10 @@ private:
         const StretchEnd end = walk_stretch(
             *stepper_, p, v,
             [&](const Vector& q, const Vector& u, std::uint64_t w, const ReferenceEvent& e) {
+                // The segment from q is w reflections into the stretch: it
+                // and every later one offer at least `here` (once it is
+                // credited, `pending_` says so to a limit).
+                const Label here{label.reflections + w, label.ray};
                 // --max-steps caps the events stepped in all stretches
                 // together, not the branch states: one stretch alone can
                 // be 10^70 reflections long before it repeats.
@@ -181,14 +218,19 @@ private:
                     return false;
                 }
                 ++events_;
-                const Label here{label.reflections + w, label.ray};
                 for (std::size_t t = 0; t < best_.size(); ++t) {
-                    Candidate& c = best_[t];
+                    const Candidate& c = best_[t];
                     if (c.found && !(here < c.label)) continue;
-                    if (stepper_->passes(scene_.targets[t], q, u, e)) c = {true, here, b};
+                    if (stepper_->passes(scene_.targets[t], q, u, e)) offer(t, here, b);
                 }
+                if (done_within(here)) {
+                    finished_ = true;
+                    return false;
+                }
+                pending_ = here;
                 return poll();
             });
+        if (finished_) return true;
         if (end.kind == StretchEnd::Kind::stopped) return false;
         if (end.kind != StretchEnd::Kind::junction) return true;
         for (const Outgoing& out : end.outgoing) {
@@ -259,8 +301,12 @@ private:
     std::vector<Waiting> queue_; // a binary heap, least label on top
     std::vector<Candidate> best_;
     std::optional<Limit> limit_;
-    // The label of the branch state being expanded: the least still open.
+    // The least label the stretch being walked can still offer (its branch
+    // state's, raised by the reflections walked): the least still open.
     std::optional<Label> pending_;
+    std::size_t unfound_ = best_.size(); // targets without a candidate
+    Label worst_;                        // the largest candidate once every target has one
+    bool finished_ = false;              // every target got a final candidate in mid-stretch
     std::uint64_t expanded_ = 0, events_ = 0;
     Clock::time_point next_poll_ = Clock::now();
 };

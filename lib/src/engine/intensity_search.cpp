@@ -103,10 +103,23 @@ private:
         for (std::size_t r = 0; r < scene_.rays.size(); ++r) {
             const Ray& ray = scene_.rays[r];
             if (*ray.intensity <= threshold_) continue; // it lights nothing
-            if (!reach(ray.start, ray.direction, *ray.intensity, 0,
-                       static_cast<std::uint32_t>(r + 1), no_parent)) {
+            const auto number = static_cast<std::uint32_t>(r + 1);
+            const std::optional<std::uint32_t> state =
+                reach(ray.start, ray.direction, *ray.intensity, 0, number, no_parent);
+            if (!state) {
                 limit_ = Limit::memory;
                 return;
+            }
+            // A target at a ray's start is lit by it with 0 reflections
+            // before any event is stepped: even a cap of 0 steps reports it
+            // once no waiting ray is more intense (or as intense and lower).
+            for (std::size_t t = 0; t < best_.size(); ++t) {
+                Candidate& c = best_[t];
+                if (scene_.targets[t] != ray.start) continue;
+                if (c.found && (*ray.intensity < c.intensity ||
+                                (*ray.intensity == c.intensity && number >= c.ray)))
+                    continue;
+                c = {true, *ray.intensity, number, 0, *state};
             }
         }
         for (;;) {
@@ -155,22 +168,25 @@ private:
         return !limit_;
     }
 
-    // Reaches (p, v) with this label from the stretch of `parent`; false
-    // when the budget refuses room (the intensity's digits are counted
-    // twice: the record's copy and the queue's).
-    bool reach(const Vector& p, const Vector& v, const Integer& intensity,
-               std::uint64_t reflections, std::uint32_t ray, std::uint32_t parent) {
+    // Reaches (p, v) with this label from the stretch of `parent`: its
+    // branch state's number, or nullopt when the budget refuses room (the
+    // intensity's digits are counted twice: the record's copy and the
+    // queue's).
+    std::optional<std::uint32_t> reach(const Vector& p, const Vector& v, const Integer& intensity,
+                                       std::uint64_t reflections, std::uint32_t ray,
+                                       std::uint32_t parent) {
         const std::size_t digits = digit_bytes(intensity);
         if (!budget_.make_room(records_) || !budget_.make_room(queue_) || !budget_.fits(2 * digits))
-            return false;
+            return std::nullopt;
         const std::optional<BranchStateSet::Inserted> at = states_.insert(p, v);
-        if (!at) return false;
+        if (!at) return std::nullopt;
         const Waiting entry{intensity, ray, at->index};
         if (at->added) {
             records_.push_back({intensity, reflections, ray, parent, false});
         } else {
             Record& r = records_[at->index];
-            if (r.settled || !after(Waiting{r.intensity, r.ray, at->index}, entry)) return true;
+            if (r.settled || !after(Waiting{r.intensity, r.ray, at->index}, entry))
+                return at->index;
             budget_.freed(digit_bytes(r.intensity));
             r.intensity = intensity;
             r.reflections = reflections;
@@ -180,7 +196,7 @@ private:
         budget_.allocated(2 * digits);
         queue_.push_back(entry);
         std::push_heap(queue_.begin(), queue_.end(), after);
-        return true;
+        return at->index;
     }
 
     // Walks the stretch of branch state `b`; false (limit_ set) when a limit
@@ -198,7 +214,10 @@ private:
                     return false;
                 }
                 if (options_.max_steps && events_ == *options_.max_steps) {
+                    // What the stretch can still offer is no more intense
+                    // than this segment, which it has not yet credited.
                     limit_ = Limit::steps;
+                    pending_ = intensity;
                     return false;
                 }
                 ++events_;
@@ -210,6 +229,7 @@ private:
                     if (stepper_.passes(scene_.targets[t], q, u, e))
                         c = {true, intensity, ray, reflections + w, b};
                 }
+                pending_ = intensity; // the rest of the stretch offers no more
                 if (!e.escape && !e.absorbed) {
                     if (e.junction) // the stretch ends here: the factors come below
                         junction_acting = e.acting;

@@ -74,19 +74,13 @@ Answer solve_illumination_by_reference(const Scene& scene, const SolveOptions& o
             queue.pop();
             if (settled[label.state]) continue;
             settled[label.state] = true;
-            if (options.max_steps && expanded == *options.max_steps) return stop(Limit::steps);
-            if (options.monitor && Clock::now() >= next_poll) {
-                if (const std::optional<Limit> limit = options.monitor->poll(expanded))
-                    return stop(*limit);
-                next_poll = Clock::now() + std::chrono::milliseconds(10);
-            }
-            ++expanded;
             const State s = states[label.state];
-            const ReferenceEvent e = reference_step(scene, s.p, s.v);
-            for (std::size_t t = 0; t < scene.targets.size(); ++t) {
+            // Labels leave the queue in order, so a target lit by this state
+            // is lit with this label. One at the state's own point needs no
+            // step to be seen: credited before the cap, so that even a cap
+            // of 0 reports a target at a ray's start (0 reflections).
+            auto light = [&](std::size_t t) {
                 TargetAnswer& target = answer.targets[t];
-                if (target.status == TargetAnswer::Status::lit) continue;
-                if (!reference_passes(scene, scene.targets[t], s.p, s.v, e)) continue;
                 target.status = TargetAnswer::Status::lit;
                 target.reflections = Integer(static_cast<unsigned long>(label.reflections));
                 target.ray = label.ray;
@@ -94,7 +88,24 @@ Answer solve_illumination_by_reference(const Scene& scene, const SolveOptions& o
                 // needed the most, and the answer's count is that one's.
                 answer.reflections = target.reflections;
                 --unlit;
+            };
+            for (std::size_t t = 0; t < scene.targets.size(); ++t)
+                if (answer.targets[t].status != TargetAnswer::Status::lit &&
+                    scene.targets[t] == s.p)
+                    light(t);
+            if (unlit == 0) break;
+            if (options.max_steps && expanded == *options.max_steps) return stop(Limit::steps);
+            if (options.monitor && Clock::now() >= next_poll) {
+                if (const std::optional<Limit> limit = options.monitor->poll(expanded))
+                    return stop(*limit);
+                next_poll = Clock::now() + std::chrono::milliseconds(10);
             }
+            ++expanded;
+            const ReferenceEvent e = reference_step(scene, s.p, s.v);
+            for (std::size_t t = 0; t < scene.targets.size(); ++t)
+                if (answer.targets[t].status != TargetAnswer::Status::lit &&
+                    reference_passes(scene, scene.targets[t], s.p, s.v, e))
+                    light(t);
             for (const Outgoing& out : e.outgoing)
                 reach({e.point, out.direction}, label.reflections + (out.reflection ? 1 : 0),
                       label.ray);
