@@ -31,10 +31,11 @@ void print_targets_text(const Answer& a) {
     for (std::size_t t = 0; t < a.targets.size(); ++t) {
         const TargetAnswer& target = a.targets[t];
         if (target.status == TargetAnswer::Status::lit)
-            std::printf("target %zu  lit after %s reflections by ray %zu%s%s\n", t + 1,
+            std::printf("target %zu  lit after %s reflections by ray %zu%s%s%s\n", t + 1,
                         target.reflections.get_str().c_str(), target.ray,
                         target.intensity ? " with intensity " : "",
-                        target.intensity ? target.intensity->get_str().c_str() : "");
+                        target.intensity ? target.intensity->get_str().c_str() : "",
+                        target.best_proven ? "" : " (the best so far: the run stopped first)");
         else
             std::printf("target %zu  %s\n", t + 1,
                         target.status == TargetAnswer::Status::unlit ? "unlit" : "unknown");

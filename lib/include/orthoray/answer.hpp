@@ -34,6 +34,12 @@ struct TargetAnswer {
     // intensity of a branch passing the target; `reflections` and `ray` are
     // then those of one branch achieving it.
     std::optional<Integer> intensity;
+    // lit after a limit: false when a branch the search had not yet walked
+    // could still reach the target with fewer reflections (or from a lower
+    // ray; for the intensity question, more intensely). The target is lit
+    // all the same (a branch reached it), and `reflections`, `ray` and
+    // `intensity` are the best found so far. Always true without a limit.
+    bool best_proven = true;
 };
 
 // What actually ran, as opposed to what SolveOptions asks for (where

@@ -23,6 +23,9 @@ void write_targets(std::ostream& out, const Answer& a) {
             out << "\"yes\",\"reflections\":" << target.reflections.get_str()
                 << ",\"ray\":" << target.ray;
             if (target.intensity) out << ",\"intensity\":" << target.intensity->get_str();
+            // Only after a limit: the best found so far, which a branch not
+            // yet walked could still beat (docs/optics.md, "Limits").
+            if (!target.best_proven) out << ",\"best_proven\":false";
             out << '}';
             break;
         case TargetAnswer::Status::unlit:

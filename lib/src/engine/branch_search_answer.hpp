@@ -1,7 +1,9 @@
 // The answer of a search over branch states (the illumination search and
 // the intensity search, docs/optics.md and docs/intensity.md) once it has
-// stopped: each target lit with its final candidate, or else unlit after a
-// complete search and unknown after a limit (never a wrong "no").
+// stopped: each target with a candidate lit (after a limit, with its best
+// candidate so far, marked when another could still beat it), or else
+// unlit after a complete search and unknown after a limit (never a wrong
+// "no").
 #pragma once
 
 #include "orthoray/answer.hpp"
@@ -12,7 +14,8 @@
 namespace orthoray::engine {
 
 // `lit(t, target)` fills target t (from 0) and returns true when the
-// search holds a final candidate for it; otherwise it leaves it alone.
+// search holds a candidate for it (setting `best_proven` when none can
+// beat it); otherwise it leaves it alone.
 // Sets the targets, `reflections` (the most among lit targets), `reason`
 // and `limit`.
 template <class Lit>

@@ -250,7 +250,9 @@ private:
         answer.arithmetic = ArithmeticUsed::rational;
         if (stepper_) stepper_->describe(answer);
         // At a limit a candidate is final only when no waiting branch state
-        // (nor the one cut short) has a smaller label.
+        // (nor the stretch cut short) has a smaller label; a target with a
+        // candidate is lit either way (optics.md: a limit reports the
+        // targets lit so far).
         std::optional<Label> least = pending_;
         if (limit_)
             for (const Waiting& w : queue_) {
@@ -261,9 +263,10 @@ private:
             }
         conclude_targets(answer, best_.size(), limit_, [&](std::size_t t, TargetAnswer& target) {
             const Candidate& c = best_[t];
-            if (!c.found || (limit_ && least && *least < c.label)) return false;
+            if (!c.found) return false;
             target.reflections = Integer(static_cast<unsigned long>(c.label.reflections));
             target.ray = c.label.ray;
+            target.best_proven = !(limit_ && least && *least < c.label);
             return true;
         });
         answer.states = Integer(static_cast<unsigned long>(states_.size()));

@@ -271,7 +271,8 @@ private:
             }
         conclude_targets(answer, best_.size(), limit_, [&](std::size_t t, TargetAnswer& target) {
             const Candidate& c = best_[t];
-            if (!c.found || (limit_ && most && c.intensity < *most)) return false;
+            if (!c.found) return false;
+            target.best_proven = !(limit_ && most && c.intensity < *most);
             target.intensity = c.intensity;
             target.reflections = Integer(static_cast<unsigned long>(c.reflections));
             target.ray = c.ray;
