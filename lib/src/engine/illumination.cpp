@@ -36,7 +36,10 @@ namespace {
 struct Label {
     std::uint64_t reflections = 0;
     std::uint32_t ray = 0; // from 1
-    auto operator<=>(const Label&) const = default;
+    bool operator<(const Label& other) const {
+        return std::tie(reflections, ray) < std::tie(other.reflections, other.ray);
+    }
+    bool operator==(const Label&) const = default;
 };
 
 // What is kept per branch state besides its key: 16 bytes.
