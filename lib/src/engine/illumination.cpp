@@ -65,6 +65,8 @@ struct Candidate {
     bool found = false;
     Label label;
     std::uint32_t branch = 0;
+
+    bool beaten_by(const Label& other) const { return !found || other < label; }
 };
 
 class IlluminationSearch {
@@ -132,7 +134,7 @@ private:
     // kept when it is the least so far.
     void offer(std::size_t t, Label label, std::uint32_t branch) {
         Candidate& c = best_[t];
-        if (c.found && !(label < c.label)) return;
+        if (!c.beaten_by(label)) return;
         if (!c.found) --unfound_;
         c = {true, label, branch};
         if (unfound_ == 0) {
@@ -221,11 +223,9 @@ private:
                     return false;
                 }
                 ++events_;
-                for (std::size_t t = 0; t < best_.size(); ++t) {
-                    const Candidate& c = best_[t];
-                    if (c.found && !(here < c.label)) continue;
-                    if (stepper_->passes(scene_.targets[t], q, u, e)) offer(t, here, b);
-                }
+                for (std::size_t t = 0; t < best_.size(); ++t)
+                    if (best_[t].beaten_by(here) && stepper_->passes(scene_.targets[t], q, u, e))
+                        offer(t, here, b);
                 if (done_within(here)) {
                     finished_ = true;
                     return false;

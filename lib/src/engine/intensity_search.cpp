@@ -62,6 +62,12 @@ struct Candidate {
     std::uint32_t ray = 0;
     std::uint64_t reflections = 0;
     std::uint32_t branch = 0; // the state whose stretch passes the target
+
+    // Whether a branch of ray `from` passing the target with intensity `by`
+    // replaces this candidate: more intense, or as intense from a smaller ray.
+    bool beaten_by(const Integer& by, std::uint32_t from) const {
+        return !found || intensity < by || (by == intensity && from < ray);
+    }
 };
 
 // The heap bytes of a big integer's digits, for the byte budget: an
@@ -115,11 +121,8 @@ private:
             // once no waiting ray is more intense (or as intense and lower).
             for (std::size_t t = 0; t < best_.size(); ++t) {
                 Candidate& c = best_[t];
-                if (scene_.targets[t] != ray.start) continue;
-                if (c.found && (*ray.intensity < c.intensity ||
-                                (*ray.intensity == c.intensity && number >= c.ray)))
-                    continue;
-                c = {true, *ray.intensity, number, 0, *state};
+                if (scene_.targets[t] == ray.start && c.beaten_by(*ray.intensity, number))
+                    c = {true, *ray.intensity, number, 0, *state};
             }
         }
         for (;;) {
@@ -223,10 +226,7 @@ private:
                 ++events_;
                 for (std::size_t t = 0; t < best_.size(); ++t) {
                     Candidate& c = best_[t];
-                    if (c.found &&
-                        (intensity < c.intensity || (intensity == c.intensity && ray >= c.ray)))
-                        continue;
-                    if (stepper_.passes(scene_.targets[t], q, u, e))
+                    if (c.beaten_by(intensity, ray) && stepper_.passes(scene_.targets[t], q, u, e))
                         c = {true, intensity, ray, reflections + w, b};
                 }
                 pending_ = intensity; // the rest of the stretch offers no more
