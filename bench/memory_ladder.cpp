@@ -16,6 +16,7 @@
 // is the latency of a load at that footprint. First touch: fresh anonymous
 // memory from mmap, one byte written to every 4 KB page, with and without
 // MADV_HUGEPAGE (2 MB pages where the kernel grants them).
+#include "bench_util.hpp"
 #include "orthoray_bench.hpp"
 
 #include <sys/mman.h>
@@ -31,11 +32,6 @@ namespace orthoray::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 struct alignas(64) Node {
     std::uint64_t next;
