@@ -34,8 +34,6 @@ struct CountingObserver : IlluminationObserver {
     void unknown(std::size_t) override {}
 };
 
-// Every target of `partial` is either unknown or exactly as in `full`, and
-// none is unlit: a limit never claims more than it proved.
 // At a limit: never unlit; a lit target is lit, with the least count when
 // the search says it is proven and with one no smaller otherwise.
 void check_partial(const Answer& partial, const Answer& full) {
@@ -67,14 +65,14 @@ TEST_CASE("branch-state search agrees with the state graph on splitter-rich scen
     shape.max_targets = 4;
     shape.scene.max_elements = 8;
     const int cases = test::case_count(1500);
-    int compared = 0, lit = 0, unlit = 0, fewer = 0;
+    int compared = 0, lit = 0, unlit = 0, fewer = 0, graph_cut = 0;
     for (int i = 0; i < cases; ++i) {
         shape.scene.dim = i % 2 == 0 ? 3 : 2;
         shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
         const Scene s = test::random_optics_scene(rng, shape);
         if (s.single_trajectory()) continue;
-        const std::optional<Answer> graph = explore_illumination_graph(s, 20000);
-        if (!graph) continue;
+        const Answer graph = explore_illumination_graph(s, 20000);
+        if (!graph.decided()) continue;
         ++compared;
         INFO("case " << i << "\n" << write_scene(s));
         // Stopping early, and exploring everything as for a certificate.
@@ -84,28 +82,44 @@ TEST_CASE("branch-state search agrees with the state graph on splitter-rich scen
         const Answer a = solve(s, full);
         CHECK(observer.branches == a.states.get_ui());
         for (const Answer& b : {solve(s), a}) {
-            CHECK(b.reason == graph->reason);
-            CHECK(b.reflections == graph->reflections);
-            REQUIRE(b.targets.size() == graph->targets.size());
+            CHECK(b.reason == graph.reason);
+            CHECK(b.reflections == graph.reflections);
+            REQUIRE(b.targets.size() == graph.targets.size());
             for (std::size_t t = 0; t < b.targets.size(); ++t) {
-                CHECK(b.targets[t].status == graph->targets[t].status);
-                CHECK(b.targets[t].reflections == graph->targets[t].reflections);
-                CHECK(b.targets[t].ray == graph->targets[t].ray);
+                CHECK(b.targets[t].status == graph.targets[t].status);
+                CHECK(b.targets[t].reflections == graph.targets[t].reflections);
+                CHECK(b.targets[t].ray == graph.targets[t].ray);
             }
             // Branch states are some of the states.
-            CHECK(b.states <= graph->states);
+            CHECK(b.states <= graph.states);
         }
-        fewer += a.states < graph->states;
+        fewer += a.states < graph.states;
         for (const TargetAnswer& t : a.targets) (t.status == Status::lit ? lit : unlit) += 1;
         // A random cap on the events stepped: a limit or the answer.
         SolveOptions capped;
         capped.max_steps = static_cast<std::uint64_t>(uniform(rng, 0, 6));
         const Answer c = solve(s, capped);
         if (c.reason == Reason::limit)
-            check_partial(c, *graph);
+            check_partial(c, graph);
         else
-            CHECK(c.reason == graph->reason);
+            CHECK(c.reason == graph.reason);
+        // The graph itself cut short after a random number of its states.
+        const std::uint64_t expanded = test::pick_index(rng, 0, graph.states.get_ui());
+        const Answer g = explore_illumination_graph(s, 20000, nullptr, expanded);
+        if (g.reason == Reason::limit) {
+            ++graph_cut;
+            CHECK(g.limit == Limit::steps);
+            check_partial(g, graph);
+        } else {
+            CHECK(g.reason == graph.reason);
+            for (std::size_t t = 0; t < g.targets.size(); ++t) {
+                CHECK(g.targets[t].status == graph.targets[t].status);
+                CHECK(g.targets[t].reflections == graph.targets[t].reflections);
+                CHECK(g.targets[t].ray == graph.targets[t].ray);
+            }
+        }
     }
+    CHECK(graph_cut > compared / 2);
     CHECK(compared > cases / 2);
     CHECK(lit > 0);
     CHECK(unlit > 0);
@@ -224,6 +238,30 @@ TEST_CASE("a cap reports a target at a ray's start, and one passed once its coun
         CHECK(c.reason == Reason::limit);
         CHECK(c.targets[0].status == Status::unknown);
     }
+    // The graph engine caps the states it expands. Cut short, it proves a
+    // count least only when nothing can beat it (0 reflections from ray 1),
+    // but reports every target lit so far.
+    {
+        const Answer a = capped("dim 2\nray 0 1 1 0\nray 5 5 0 1\ntarget 0 1\n", 0, Engine::graph);
+        CHECK(a.reason == Reason::lit);
+        CHECK(a.targets[0].reflections == 0);
+        CHECK(a.targets[0].ray == 1);
+        const char* between = "dim 2\nmirror x 0 y 0 1\nmirror x 1 y 0 1\n"
+                              "splitter y 50 x 50 51\nray 1/2 1/2 1 0\ntarget 0 1/2\n";
+        const Answer b = capped(between, 1, Engine::graph);
+        CHECK(b.reason == Reason::limit);
+        CHECK(b.limit == Limit::steps);
+        CHECK(b.targets[0].status == Status::unknown);
+        const Answer c = capped(between, 2, Engine::graph);
+        CHECK(c.reason == Reason::limit);
+        CHECK(c.targets[0].status == Status::lit);
+        CHECK(c.targets[0].reflections == 1);
+        CHECK_FALSE(c.targets[0].best_proven);
+        const Answer d = capped(between, 1000, Engine::graph);
+        CHECK(d.reason == Reason::lit);
+        CHECK(d.targets[0].reflections == 1);
+        CHECK(d.targets[0].best_proven);
+    }
     // The branch search in the middle of one long stretch: the segment
     // after 5 reflections passes the target, and once it is stepped (event
     // 6) the count is final, since later segments come after more
@@ -339,24 +377,24 @@ TEST_CASE("branch search and reference search agree with the state graph on 5000
         shape.max_targets = 1 + (i / 3) % 3;
         const Scene s = test::random_optics_scene(rng, shape);
         if (s.single_trajectory()) continue;
-        const std::optional<Answer> graph = explore_illumination_graph(s, 20000);
-        if (!graph) continue;
+        const Answer graph = explore_illumination_graph(s, 20000);
+        if (!graph.decided()) continue;
         ++compared;
         INFO("case " << i << "\n" << write_scene(s));
         const Answer branches = solve(s), plain = solve(s, reference);
         CHECK(branches.engine == EngineUsed::branches);
         CHECK(plain.engine == EngineUsed::reference);
         for (const Answer* a : {&branches, &plain}) {
-            CHECK(a->reason == graph->reason);
-            CHECK(a->reflections == graph->reflections);
-            REQUIRE(a->targets.size() == graph->targets.size());
+            CHECK(a->reason == graph.reason);
+            CHECK(a->reflections == graph.reflections);
+            REQUIRE(a->targets.size() == graph.targets.size());
             for (std::size_t t = 0; t < a->targets.size(); ++t) {
-                CHECK(a->targets[t].status == graph->targets[t].status);
-                CHECK(a->targets[t].reflections == graph->targets[t].reflections);
-                CHECK(a->targets[t].ray == graph->targets[t].ray);
+                CHECK(a->targets[t].status == graph.targets[t].status);
+                CHECK(a->targets[t].reflections == graph.targets[t].reflections);
+                CHECK(a->targets[t].ray == graph.targets[t].ray);
             }
         }
-        for (const TargetAnswer& t : graph->targets) (t.status == Status::lit ? lit : unlit) += 1;
+        for (const TargetAnswer& t : graph.targets) (t.status == Status::lit ? lit : unlit) += 1;
     }
     CHECK(compared > cases * 3 / 5);
     CHECK(lit > compared / 2);

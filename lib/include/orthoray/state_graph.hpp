@@ -35,9 +35,16 @@ std::optional<StateGraphReport> explore_state_graph(const Scene& scene, std::uin
 // The illumination question (docs/optics.md) on the graph of the states
 // reachable from the rays, one out-edge per outgoing direction: lit or
 // unlit by breadth-first search, the least reflections by Dijkstra on 0/1
-// weights. std::nullopt when more than max_states states are reachable; a
-// monitor's limit gives Reason::limit with every target unknown.
-std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64_t max_states,
-                                                 RunMonitor* monitor = nullptr);
+// weights. It stops early, with Reason::limit, when more than max_states
+// states are reachable (Limit::memory), when max_expanded states have been
+// expanded (one event each; Limit::steps, the cap of SolveOptions::max_steps)
+// or when the monitor, polled every 1024 states, says so. Then the targets
+// passed by the states built so far are lit (optics.md: "the targets lit so
+// far"), with the least count over the graph built so far, which is proven
+// least (TargetAnswer::best_proven) only when it is 0 reflections from ray 1;
+// the others are unknown.
+Answer explore_illumination_graph(const Scene& scene, std::uint64_t max_states,
+                                  RunMonitor* monitor = nullptr,
+                                  std::optional<std::uint64_t> max_expanded = std::nullopt);
 
 } // namespace orthoray

@@ -30,8 +30,8 @@ enum : std::size_t { all_rays_vertex = 0 };
 
 } // namespace
 
-std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64_t max_states,
-                                                 RunMonitor* monitor) {
+Answer explore_illumination_graph(const Scene& scene, std::uint64_t max_states, RunMonitor* monitor,
+                                  std::optional<std::uint64_t> max_expanded) {
     Answer answer;
     answer.engine = EngineUsed::graph;
     answer.arithmetic = ArithmeticUsed::rational;
@@ -39,7 +39,8 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
 
     // Discover the reachable states, numbering them from 1 (0 is the
     // vertex that feeds every ray), and record the edges and which targets
-    // each state's segment passes.
+    // each state's segment passes. States are expanded in the order found
+    // (breadth-first in hops), until every one is or a limit stops the walk.
     std::map<Key, std::size_t> id;
     std::vector<Key> key_of{Key{}};
     struct Edge {
@@ -58,13 +59,20 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
         edges.push_back({all_rays_vertex, ray_vertex.back(), 0});
     }
     std::vector<std::vector<std::size_t>> passes{{}};
-    for (std::size_t u = 1; u < key_of.size(); ++u) {
-        if (key_of.size() > max_states + 1) return std::nullopt;
+    std::optional<Limit> stopped;
+    std::size_t u = 1;
+    for (; u < key_of.size(); ++u) {
+        if (key_of.size() > max_states + 1) {
+            stopped = Limit::memory;
+            break;
+        }
+        if (max_expanded && u - 1 == *max_expanded) {
+            stopped = Limit::steps;
+            break;
+        }
         if (monitor && u % 1024 == 0) {
-            if (const std::optional<Limit> limit = monitor->poll(0)) {
-                answer.limit = *limit;
-                return answer;
-            }
+            stopped = monitor->poll(0);
+            if (stopped) break;
         }
         const Key k = key_of[u];
         const engine::ReferenceEvent e = engine::reference_step(scene, k.first, k.second);
@@ -74,6 +82,16 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
                 passes.back().push_back(t);
         for (const engine::Outgoing& out : e.outgoing)
             edges.push_back({u, vertex({e.point, out.direction}), out.reflection ? 1u : 0u});
+    }
+    // A state found but not expanded passes at least the targets at its own
+    // point. Only a ray's start needs this: any other such state was found
+    // from an expanded one whose segment ends at that point, which passes
+    // those targets with no more reflections (the edge's weight counts the
+    // reflection at the point, made after passing it).
+    for (; u < key_of.size(); ++u) {
+        passes.emplace_back();
+        for (std::size_t t = 0; t < scene.targets.size(); ++t)
+            if (scene.targets[t] == key_of[u].first) passes.back().push_back(t);
     }
     const std::size_t n = key_of.size();
     Graph g(n);
@@ -87,9 +105,9 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
                                 boost::visitor(boost::make_bfs_visitor(
                                     boost::record_distances(hops.data(), boost::on_tree_edge()))));
     std::vector<bool> lit(scene.targets.size(), false);
-    for (std::size_t u = 1; u < n; ++u)
-        if (hops[u] != unreached)
-            for (std::size_t t : passes[u]) lit[t] = true;
+    for (std::size_t v = 1; v < n; ++v)
+        if (hops[v] != unreached)
+            for (std::size_t t : passes[v]) lit[t] = true;
 
     // The least reflections: Dijkstra from each ray; a strictly smaller
     // count from a later ray replaces an earlier one, an equal one does not.
@@ -98,10 +116,10 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
         std::vector<std::uint64_t> distance(n, infinite);
         boost::dijkstra_shortest_paths(g, boost::vertex(ray_vertex[r], g),
                                        boost::distance_map(distance.data()));
-        for (std::size_t u = 1; u < n; ++u) {
-            if (distance[u] == infinite) continue;
-            const Integer d = Integer(static_cast<unsigned long>(distance[u]));
-            for (std::size_t t : passes[u]) {
+        for (std::size_t v = 1; v < n; ++v) {
+            if (distance[v] == infinite) continue;
+            const Integer d = Integer(static_cast<unsigned long>(distance[v]));
+            for (std::size_t t : passes[v]) {
                 TargetAnswer& target = answer.targets[t];
                 if (target.status == TargetAnswer::Status::lit && target.reflections <= d) continue;
                 target = {TargetAnswer::Status::lit, d, r + 1, std::nullopt};
@@ -114,13 +132,23 @@ std::optional<Answer> explore_illumination_graph(const Scene& scene, std::uint64
         // BFS and Dijkstra must agree on which targets are lit.
         if (lit[t] != (target.status == TargetAnswer::Status::lit))
             throw std::logic_error("illumination graph: BFS and Dijkstra disagree");
-        if (!lit[t]) target.status = TargetAnswer::Status::unlit;
+        // Cut short, the graph may lack a cheaper path to the target; none
+        // beats 0 reflections from ray 1.
+        if (stopped && lit[t]) target.best_proven = target.reflections == 0 && target.ray == 1;
+        if (!lit[t] && !stopped) target.status = TargetAnswer::Status::unlit;
         if (lit[t] && target.reflections > answer.reflections)
             answer.reflections = target.reflections;
-        all = all && lit[t];
+        all = all && lit[t] && target.best_proven;
     }
-    answer.reason = all ? Reason::lit : Reason::unlit;
     answer.states = Integer(static_cast<unsigned long>(n - 1));
+    // Every target lit with a proven count answers the question whatever
+    // the limit left unexplored.
+    if (stopped && !all) {
+        answer.reason = Reason::limit;
+        answer.limit = *stopped;
+    } else {
+        answer.reason = all ? Reason::lit : Reason::unlit;
+    }
     return answer;
 }
 

@@ -55,13 +55,13 @@ Answer solve_by_graph(const Scene& scene, const SolveOptions& options) {
     return answer;
 }
 
-// The illumination question on the explicit graph of reachable states; a
-// scene with too many of them is a memory limit with every target unknown.
+// The illumination question on the explicit graph of reachable states;
+// max_steps caps the states it expands (one event each), as in the
+// reference search. Running out of memory leaves every target unknown.
 Answer solve_illumination_by_graph(const Scene& scene, const SolveOptions& options) {
     try {
-        if (std::optional<Answer> answer =
-                explore_illumination_graph(scene, options.max_graph_states, options.monitor))
-            return *answer;
+        return explore_illumination_graph(scene, options.max_graph_states, options.monitor,
+                                          options.max_steps);
     } catch (const std::bad_alloc&) {
     }
     Answer answer;
