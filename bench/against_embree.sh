@@ -6,24 +6,35 @@
 # 10^18, CPU time by perf stat when it is installed. Run it on an idle
 # machine; it takes about four minutes on 2 cores.
 #
-#   bench/against_embree.sh [BUILD_DIR] [OUT_DIR]
+#   bench/against_embree.sh [BUILD_DIR] [OUT_DIR] [CPU]
 #
 # Writes OUT_DIR/embree.md, OUT_DIR/induction-narrow.md and OUT_DIR/memory.md
 # (default bench/results); the machine and load are in each file. The last
 # is the machine's load latency and cost of fresh memory, what bounds the
 # rows of 10^5 elements (bench/README.md, "The machine's memory").
+#
+# Every process runs on one core, CPU (default 0), by taskset: the two
+# virtual cores of the test VM have differed by up to 1.8x in speed at the
+# same moment (bench/README.md, "Pinning"), and a contender the scheduler
+# put on the slow one lost a ratio it would have won. CPU "none" leaves the
+# placement to the scheduler.
 set -euo pipefail
 build=${1:-build}
 out=${2:-bench/results}
+cpu=${3:-0}
 mkdir -p "$out"
+
+pin=()
+if [[ $cpu != none ]] && command -v taskset >/dev/null; then pin=(taskset -c "$cpu"); fi
 
 machine() {
     echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //');" \
         "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown); $(date -u '+%F %R UTC');" \
-        "load average $(cut -d' ' -f1-3 /proc/loadavg)."
+        "load average $(cut -d' ' -f1-3 /proc/loadavg);" \
+        "${pin[*]:-not pinned}."
 }
 
-"$build/bench/orthoray_bench" --mode embree --steps 3e6 --runs 5 --csv "" >"$out/embree.md"
+"${pin[@]}" "$build/bench/orthoray_bench" --mode embree --steps 3e6 --runs 5 --csv "" >"$out/embree.md"
 
 {
     echo "# Induction on random mirrors, coordinates to 10^18 (issue 17, item 4)"
@@ -31,15 +42,15 @@ machine() {
     machine
     echo
     echo '```'
-    "$build/bench/induction_bench" --mirrors 1000 --mirrors 10000 --runs 5 --sim-cap 0 --csv ""
-    "$build/bench/induction_bench" --mirrors 100000 --runs 1 --sim-cap 0 --csv ""
+    "${pin[@]}" "$build/bench/induction_bench" --mirrors 1000 --mirrors 10000 --runs 5 --sim-cap 0 --csv ""
+    "${pin[@]}" "$build/bench/induction_bench" --mirrors 100000 --runs 1 --sim-cap 0 --csv ""
     echo '```'
     if command -v perf >/dev/null; then
         echo
         echo "CPU time of one process each (perf stat -e task-clock; scene generation included):"
         echo
         for n in 1000 10000 100000; do
-            perf stat -x, -e task-clock "$build/bench/induction_bench" --mirrors "$n" --runs 1 \
+            "${pin[@]}" perf stat -x, -e task-clock "$build/bench/induction_bench" --mirrors "$n" --runs 1 \
                 --sim-cap 0 --csv "" 2>&1 >/dev/null |
                 awk -F, -v n="$n" '/task-clock/ {printf "- %s mirrors: %.3f s CPU\n", n, $1 / 1000}'
         done
@@ -50,6 +61,6 @@ machine() {
 {
     machine
     echo
-    "$build/bench/orthoray_bench" --mode memory --runs 3 | sed -n '/^## /,$p'
+    "${pin[@]}" "$build/bench/orthoray_bench" --mode memory --runs 3 | sed -n '/^## /,$p'
 } >"$out/memory.md"
 echo "wrote $out/embree.md, $out/induction-narrow.md and $out/memory.md"

@@ -16,6 +16,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -109,6 +110,20 @@ std::string load_average() {
     return one + " " + five + " " + fifteen;
 }
 
+// The cores this process (and every contender it forks) may run on: all of
+// them unless it was pinned (bench/against_embree.sh pins to one).
+std::string cores_allowed() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) != 0) return "unknown cores";
+    const long online = sysconf(_SC_NPROCESSORS_ONLN);
+    if (CPU_COUNT(&set) == online) return "not pinned";
+    std::string list;
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+        if (CPU_ISSET(c, &set)) list += (list.empty() ? "" : ",") + std::to_string(c);
+    return "pinned to CPU " + list;
+}
+
 void print_machine() {
     std::ifstream cpu("/proc/cpuinfo");
     std::string line, model;
@@ -118,10 +133,10 @@ void print_machine() {
             break;
         }
     long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    std::printf("Machine: %ld cores online, %s, %.1f GB memory; load average %s.\n\n",
+    std::printf("Machine: %ld cores online, %s, %.1f GB memory; load average %s; %s.\n\n",
                 sysconf(_SC_NPROCESSORS_ONLN), model.empty() ? "unknown CPU" : model.c_str(),
                 static_cast<double>(pages) * static_cast<double>(page) / 1e9,
-                load_average().c_str());
+                load_average().c_str(), cores_allowed().c_str());
 }
 
 } // namespace
