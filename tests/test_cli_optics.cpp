@@ -65,6 +65,18 @@ TEST_CASE("solve answers the illumination question target by target", "[cli][opt
     CHECK(l["reason"] == "limit");
     CHECK(l["targets"][0]["answer"] == "yes");
     CHECK(l["targets"][2]["answer"] == "unknown");
+
+    // The graph engine takes the cap too (states expanded), and reports
+    // the same way: with 2 states, target 1 (0 reflections from ray 1,
+    // proven) is lit and target 3 unknown, never unlit.
+    const CliResult graph = run_cli("solve --json --engine graph --max-steps 2 " + quote(file));
+    CHECK(graph.status == 3);
+    const nlohmann::json g = json_of(graph);
+    CHECK(g["reason"] == "limit");
+    CHECK(g["limit"] == "steps");
+    CHECK(g["targets"][0] ==
+          nlohmann::json::parse(R"({"target":1,"answer":"yes","reflections":0,"ray":1})"));
+    CHECK(g["targets"][2]["answer"] == "unknown");
 }
 
 TEST_CASE("solve reports tail and period of a rho-shaped cycle", "[cli][optics]") {
