@@ -118,6 +118,15 @@ TEST_CASE("branch-state search agrees with the state graph on splitter-rich scen
                 CHECK(g.targets[t].ray == graph.targets[t].ray);
             }
         }
+        // And by its ceiling on the states it may hold: a memory limit.
+        const std::uint64_t ceiling = test::pick_index(rng, 1, graph.states.get_ui());
+        const Answer m = explore_illumination_graph(s, ceiling);
+        if (m.reason == Reason::limit) {
+            CHECK(m.limit == Limit::memory);
+            check_partial(m, graph);
+        } else {
+            CHECK(m.reason == graph.reason);
+        }
     }
     CHECK(graph_cut > compared / 2);
     CHECK(compared > cases / 2);
