@@ -1,6 +1,7 @@
 // The orthoray command line as a user meets it: exit statuses, one-line
 // errors on stderr and nothing on stdout for bad input, the JSON and text
 // answers, certificates and their verification, and the help texts.
+#include "support/cli_checks.hpp"
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
 
@@ -9,7 +10,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -23,38 +23,6 @@ namespace fs = std::filesystem;
 
 const std::string box_corner = "2d/box-corner-3x5.scene";         // yes, hit, 6
 const std::string unit_square = "2d/unit-square-slope-2-3.scene"; // no, cycle, period 10
-
-bool is_one_line(const std::string& s) {
-    return !s.empty() && s.back() == '\n' && std::count(s.begin(), s.end(), '\n') == 1;
-}
-
-bool has_raw_control_bytes(const std::string& s) {
-    for (unsigned char c : s)
-        if ((c < 0x20 && c != '\n') || c >= 0x7f) return true;
-    return false;
-}
-
-bool starts_with(const std::string& s, const std::string& prefix) {
-    return s.rfind(prefix, 0) == 0;
-}
-
-// Bad input: status 2, nothing on stdout, exactly one printable line on stderr.
-void require_bad_input(const CliResult& r) {
-    INFO("stdout: " << r.out);
-    INFO("stderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(is_one_line(r.err));
-    CHECK_FALSE(has_raw_control_bytes(r.err));
-}
-
-nlohmann::json parse_json(const std::string& out) {
-    INFO("stdout: " << out);
-    REQUIRE(is_one_line(out));
-    nlohmann::json j = nlohmann::json::parse(out); // throws (and fails the test) if not JSON
-    REQUIRE(j.is_object());
-    return j;
-}
 
 } // namespace
 
@@ -400,161 +368,6 @@ TEST_CASE("a malformed certificate is bad input", "[cli]") {
     const CliResult v = run_cli("verify " + quote(instance(box_corner)) + " " + quote(cert));
     require_bad_input(v);
     CHECK(starts_with(v.err, cert + ":1:1: "));
-}
-
-TEST_CASE("pieces prints the 2D piece tables and refuses other scenes", "[cli][pieces]") {
-    const CliResult r = run_cli("pieces " + quote(instance(box_corner)));
-    CHECK(r.status == 0);
-    CHECK(r.err.empty());
-    // From (0, 2) on the left wall, moving up and right, the ray reaches the
-    // corner (3, 5) at t = 3 and flips both components.
-    CHECK(r.out.find("element 0 +x+y from 2: element 3 at t = 3, flip xy\n") != std::string::npos);
-    const CliResult r3 =
-        run_cli("pieces " + quote(source_path("instances/3d/box-corner-1x2x3.scene")));
-    require_bad_input(r3);
-}
-
-// ---------------------------------------------------------------- generate, bounds
-
-TEST_CASE("generate writes the same bytes to stdout and -o, and they solve as expected",
-          "[cli][generate]") {
-    TempDir dir;
-    const std::string args = "generate random --dim 3 --mirrors 30 --denominator 3 --box "
-                             "--absorbers 1/10 --target-after 12 --seed 5";
-    const CliResult first = run_cli(args), second = run_cli(args);
-    CHECK(first.status == 0);
-    CHECK(first.err.empty());
-    CHECK(first.out == second.out);
-    CHECK(starts_with(first.out, "# orthoray generate random --seed 5 --dim 3 --mirrors 30 "));
-    const std::string file = dir.path("random.scene");
-    const CliResult written = run_cli(args + " -o " + quote(file));
-    CHECK(written.status == 0);
-    CHECK(written.out.empty());
-    CHECK(slurp(file) == first.out);
-    CHECK(first.out != run_cli(args + "0").out); // seed 50
-
-    REQUIRE(first.out.find("# expect: yes hit ") != std::string::npos);
-    const nlohmann::json answer = parse_json(run_cli("solve --json " + quote(file)).out);
-    const std::size_t at = first.out.find("# expect: yes hit ") + 18;
-    CHECK(answer["answer"] == "yes");
-    CHECK(answer["reflections"].dump() == first.out.substr(at, first.out.find('\n', at) - at));
-}
-
-TEST_CASE("generate random records the optics options in its header", "[cli][generate]") {
-    const CliResult r = run_cli("generate random --mirrors 12 --splitters 1/3 --one-sided 1/4 "
-                                "--rays 2 --targets 3 --box --seed 4");
-    CHECK(r.status == 0);
-    CHECK(r.err.empty());
-    CHECK(starts_with(r.out, "# orthoray generate random --seed 4 --mirrors 12 --splitters 1/3 "
-                             "--one-sided 1/4 --rays 2 --targets 3 --box true\n"));
-    CHECK(r.out == run_cli("generate random --box --targets 3 --rays 2 --one-sided 1/4 "
-                           "--splitters 1/3 --mirrors 12 --seed 4")
-                       .out);
-}
-
-TEST_CASE("generate: each family runs from the command line", "[cli][generate][slow]") {
-    for (const char* args : {"box --sides 3 5 --target far", "box --sides 2 3 4 --target generic",
-                             "box --sides 4 6 --start 1 0 --direction 1 2 --target-point 1 1",
-                             "square --direction 5 3", "hallway --length 100 --slope 1/7",
-                             "coprime-box --k 6", "coprime-cuboid --k 3 --target far"}) {
-        INFO("orthoray generate " << args);
-        const CliResult r = run_cli(std::string("generate ") + args);
-        CHECK(r.status == 0);
-        CHECK(r.err.empty());
-        const std::string family = std::string(args).substr(0, std::string(args).find(' '));
-        CHECK(starts_with(r.out, "# orthoray generate " + family + " "));
-    }
-    CHECK(run_cli("generate box --sides 4 5 --target far").out.find("# expect: no cycle 16\n") !=
-          std::string::npos);
-    CHECK(run_cli("generate coprime-box --k 6").out.find("# expect: yes hit 127\n") !=
-          std::string::npos);
-}
-
-TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate][slow]") {
-    for (const char* args : {
-             "generate",                                  // no family
-             "generate frobnicate",                       // unknown family
-             "generate box --mirrors 3",                  // an option of another family
-             "generate box --sides 3",                    // one side
-             "generate box --sides 3 0",                  // a zero side
-             "generate box --sides 3 5 --start 1 1 1",    // a 3D start in a 2D box
-             "generate box --sides 3 5 --direction 0 0",  // no direction
-             "generate box --sides 3 5 --target nowhere", // not a target kind
-             "generate box --sides 3 5 --target far --target-point 1 1",
-             "generate random --absorbers x",                       // not a number
-             "generate random --absorbers 3/2",                     // not a fraction in [0, 1]
-             "generate random --absorbers 1/100000000000000000000", // a huge denominator
-             "generate random --bits 3 --range 9",                  // two ways to say one thing
-             "generate random --dim 4",                             // no such dimension
-             "generate random --splitters 2",                       // not a fraction in [0, 1]
-             "generate random --rays 0",                            // no ray
-             "generate random --targets 2 --target-after 3",        // which target?
-             "generate square --direction 0 1",                     // a zero component
-             "generate hallway --slope -1",                         // a negative slope
-             "generate coprime-box --k 0",                          // k too small
-         }) {
-        INFO("orthoray " << args);
-        const CliResult r = run_cli(args);
-        require_bad_input(r);
-        CHECK(starts_with(r.err, "orthoray: "));
-    }
-    TempDir dir;
-    const CliResult r =
-        run_cli("generate box --sides 3 5 -o " + quote(dir.path("no-such-dir/x.scene")));
-    require_bad_input(r);
-}
-
-TEST_CASE("generate --help lists every family with an example", "[cli][generate]") {
-    const CliResult r = run_cli("generate --help");
-    CHECK(r.status == 0);
-    for (const char* family :
-         {"random", "box", "square", "hallway", "coprime-box", "coprime-cuboid"})
-        CHECK(r.out.find(std::string("orthoray generate ") + family + " ") != std::string::npos);
-    for (const char* option : {"--seed", "--mirrors", "--absorbers", "--bits", "--denominator",
-                               "--box", "--target-after", "--direction-size", "--sides", "--target",
-                               "--length", "--slope", "--k", "-o"})
-        CHECK(r.out.find(option) != std::string::npos);
-}
-
-TEST_CASE("bounds prints the lattice and refined bounds", "[cli][bounds]") {
-    const nlohmann::json j =
-        parse_json(run_cli("bounds --json " + quote(instance(box_corner))).out);
-    CHECK(j["dim"] == 2);
-    CHECK(j["scale"] == nlohmann::json::array({1, 1}));
-    CHECK(j["points"] == 16);
-    CHECK(j["lattice_states"] == 64);
-    CHECK(j["line_modulus"] == nlohmann::json::array({2}));
-    CHECK(j["refined_states"] == 32);
-    CHECK(j["pieces"].is_number_integer());
-
-    const nlohmann::json bare =
-        parse_json(run_cli("bounds --json --no-pieces " + quote(instance(box_corner))).out);
-    CHECK_FALSE(bare.contains("pieces"));
-    CHECK(bare["refined_states"] == 32);
-
-    const CliResult text = run_cli("bounds " + quote(instance(box_corner)));
-    CHECK(text.status == 0);
-    CHECK(text.out.find("lattice states   64 (points * 2^2)\n") != std::string::npos);
-    CHECK(text.out.find("refined states   32\n") != std::string::npos);
-
-    const nlohmann::json j3 = parse_json(
-        run_cli("bounds --json " + quote(source_path("instances/3d/box-corner-1x2x3.scene"))).out);
-    CHECK(j3["dim"] == 3);
-    CHECK(j3["points"] == 24); // the 2 x 3 x 4 grid of the 1 x 2 x 3 box: all on its surface
-    CHECK(j3["line_modulus"].size() == 3);
-    CHECK_FALSE(j3.contains("pieces"));
-}
-
-TEST_CASE("bounds: bad input and usage are status 2", "[cli][bounds]") {
-    TempDir dir;
-    const std::string file = dir.write("bad.scene", "dim 2\nray 0 0 1\n");
-    CliResult r = run_cli("bounds " + quote(file));
-    require_bad_input(r);
-    CHECK(starts_with(r.err, file + ":2:10: "));
-    r = run_cli("bounds");
-    require_bad_input(r);
-    r = run_cli("bounds --json --frobnicate " + quote(instance(box_corner)));
-    require_bad_input(r);
 }
 
 TEST_CASE("solve on generated long orbits gives the closed-form answer", "[cli][slow]") {

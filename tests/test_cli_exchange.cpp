@@ -2,6 +2,7 @@
 // instance, solve/verify/pieces on JSON scenes, malformed JSON as exit 2
 // with one FILE:LINE:COL line, JSON Lines certificates verified and
 // tampered ones rejected, and render writing SVG and PNG.
+#include "support/cli_checks.hpp"
 #include "support/run_cli.hpp"
 #include "support/spawn_cli.hpp"
 #include "support/test_files.hpp"
@@ -21,13 +22,6 @@ using namespace orthoray::test;
 namespace {
 
 namespace fs = std::filesystem;
-
-void require_bad_input(const CliResult& r) {
-    INFO("stdout: " << r.out << "\nstderr: " << r.err);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-}
 
 // The first line of `solve` (answer ...) and its exit status.
 std::string answer_of(const CliResult& r) {
