@@ -22,7 +22,6 @@ using orthoray::test::Certified;
 using orthoray::test::certify;
 using orthoray::test::expect_rejected;
 using orthoray::test::Outcome;
-using orthoray::test::starts_with;
 using orthoray::test::verify;
 
 // Solves `scene_text` with both simulation engines and compares the whole
@@ -40,7 +39,7 @@ void expect_certificate(const char* scene_text, const std::string& expected,
         const Outcome outcome = verify(scene, c.text);
         INFO("verify said: " << outcome.message);
         if (max_steps) {
-            CHECK(starts_with(outcome.message, "partial"));
+            CHECK(outcome.message.starts_with("partial"));
             CHECK_FALSE(outcome.valid);
         } else {
             CHECK(outcome.valid);

@@ -83,7 +83,7 @@ TEST_CASE("binary garbage is bad input, never a crash", "[cli]") {
         INFO("garbage file " << i);
         const CliResult r = run_cli("solve --json " + quote(file));
         require_bad_input(r);
-        CHECK(starts_with(r.err, file + ":"));
+        CHECK(r.err.starts_with(file + ":"));
     }
 }
 
@@ -93,7 +93,7 @@ TEST_CASE("a bad scene writes no certificate", "[cli]") {
     const std::string cert = dir.path("out.cert");
     const CliResult r = run_cli("solve " + quote(file) + " --certificate " + quote(cert));
     require_bad_input(r);
-    CHECK(starts_with(r.err, file + ":2:10: "));
+    CHECK(r.err.starts_with(file + ":2:10: "));
     CHECK_FALSE(fs::exists(cert));
 }
 
@@ -102,15 +102,15 @@ TEST_CASE("a missing file or a directory is bad input", "[cli]") {
     const std::string missing = dir.path("no-such.scene");
     CliResult r = run_cli("solve " + quote(missing));
     require_bad_input(r);
-    CHECK(starts_with(r.err, missing + ":1:1: "));
+    CHECK(r.err.starts_with(missing + ":1:1: "));
 
     r = run_cli("solve --json " + quote(dir.path("")));
     require_bad_input(r);
-    CHECK(starts_with(r.err, dir.path("") + ":1:1: found a directory"));
+    CHECK(r.err.starts_with(dir.path("") + ":1:1: found a directory"));
 
     r = run_cli("verify " + quote(instance(box_corner)) + " " + quote(missing));
     require_bad_input(r);
-    CHECK(starts_with(r.err, missing + ":1:1: "));
+    CHECK(r.err.starts_with(missing + ":1:1: "));
 }
 
 TEST_CASE("usage errors: status 2, no stdout, one line", "[cli][slow]") {
@@ -130,7 +130,7 @@ TEST_CASE("usage errors: status 2, no stdout, one line", "[cli][slow]") {
         INFO("orthoray " << args);
         const CliResult r = run_cli(args);
         require_bad_input(r);
-        CHECK(starts_with(r.err, "orthoray: "));
+        CHECK(r.err.starts_with("orthoray: "));
     }
 }
 
@@ -312,7 +312,7 @@ TEST_CASE("solve --certificate then verify says valid", "[cli]") {
         const CliResult v = run_cli("verify " + quote(instance(name)) + " " + quote(cert));
         INFO(v.out << v.err);
         CHECK(v.status == 0);
-        CHECK(starts_with(v.out, "valid"));
+        CHECK(v.out.starts_with("valid"));
         CHECK(is_one_line(v.out));
         CHECK(v.err.empty());
     }
@@ -336,19 +336,19 @@ TEST_CASE("a tampered certificate is invalid", "[cli]") {
     const CliResult v = run_cli("verify " + quote(instance(box_corner)) + " " + quote(bad_cert));
     INFO(v.out << v.err);
     CHECK(v.status == 1);
-    CHECK(starts_with(v.out, "invalid"));
+    CHECK(v.out.starts_with("invalid"));
     CHECK(is_one_line(v.out));
 
     // A certificate checked against another scene is invalid too.
     const CliResult other = run_cli("verify " + quote(instance(unit_square)) + " " + quote(cert));
     CHECK(other.status == 1);
-    CHECK(starts_with(other.out, "invalid"));
+    CHECK(other.out.starts_with("invalid"));
 
     // A cut-off certificate (no final `end`) never verifies.
     const std::string cut = dir.write("cut.cert", good.substr(0, good.find("answer")));
     const CliResult c = run_cli("verify " + quote(instance(box_corner)) + " " + quote(cut));
     CHECK(c.status == 1);
-    CHECK(starts_with(c.out, "invalid"));
+    CHECK(c.out.starts_with("invalid"));
 }
 
 TEST_CASE("a --max-steps certificate is partial and exits 1", "[cli]") {
@@ -367,7 +367,7 @@ TEST_CASE("a malformed certificate is bad input", "[cli]") {
     const std::string cert = dir.write("junk.cert", "not a certificate\n");
     const CliResult v = run_cli("verify " + quote(instance(box_corner)) + " " + quote(cert));
     require_bad_input(v);
-    CHECK(starts_with(v.err, cert + ":1:1: "));
+    CHECK(v.err.starts_with(cert + ":1:1: "));
 }
 
 TEST_CASE("solve on generated long orbits gives the closed-form answer", "[cli][slow]") {

@@ -43,7 +43,7 @@ TEST_CASE("generate writes the same bytes to stdout and -o, and they solve as ex
     CHECK(first.status == 0);
     CHECK(first.err.empty());
     CHECK(first.out == second.out);
-    CHECK(starts_with(first.out, "# orthoray generate random --seed 5 --dim 3 --mirrors 30 "));
+    CHECK(first.out.starts_with("# orthoray generate random --seed 5 --dim 3 --mirrors 30 "));
     const std::string file = dir.path("random.scene");
     const CliResult written = run_cli(args + " -o " + quote(file));
     CHECK(written.status == 0);
@@ -63,8 +63,8 @@ TEST_CASE("generate random records the optics options in its header", "[cli][gen
                                 "--rays 2 --targets 3 --box --seed 4");
     CHECK(r.status == 0);
     CHECK(r.err.empty());
-    CHECK(starts_with(r.out, "# orthoray generate random --seed 4 --mirrors 12 --splitters 1/3 "
-                             "--one-sided 1/4 --rays 2 --targets 3 --box true\n"));
+    CHECK(r.out.starts_with("# orthoray generate random --seed 4 --mirrors 12 --splitters 1/3 "
+                            "--one-sided 1/4 --rays 2 --targets 3 --box true\n"));
     CHECK(r.out == run_cli("generate random --box --targets 3 --rays 2 --one-sided 1/4 "
                            "--splitters 1/3 --mirrors 12 --seed 4")
                        .out);
@@ -80,7 +80,7 @@ TEST_CASE("generate: each family runs from the command line", "[cli][generate][s
         CHECK(r.status == 0);
         CHECK(r.err.empty());
         const std::string family = std::string(args).substr(0, std::string(args).find(' '));
-        CHECK(starts_with(r.out, "# orthoray generate " + family + " "));
+        CHECK(r.out.starts_with("# orthoray generate " + family + " "));
     }
     CHECK(run_cli("generate box --sides 4 5 --target far").out.find("# expect: no cycle 16\n") !=
           std::string::npos);
@@ -114,7 +114,7 @@ TEST_CASE("generate: usage errors are status 2 with one line", "[cli][generate][
         INFO("orthoray " << args);
         const CliResult r = run_cli(args);
         require_bad_input(r);
-        CHECK(starts_with(r.err, "orthoray: "));
+        CHECK(r.err.starts_with("orthoray: "));
     }
     TempDir dir;
     const CliResult r =
@@ -168,7 +168,7 @@ TEST_CASE("bounds: bad input and usage are status 2", "[cli][bounds]") {
     const std::string file = dir.write("bad.scene", "dim 2\nray 0 0 1\n");
     CliResult r = run_cli("bounds " + quote(file));
     require_bad_input(r);
-    CHECK(starts_with(r.err, file + ":2:10: "));
+    CHECK(r.err.starts_with(file + ":2:10: "));
     r = run_cli("bounds");
     require_bad_input(r);
     r = run_cli("bounds --json --frobnicate " + quote(instance(box_corner)));

@@ -72,10 +72,6 @@ std::string with_last_word(const std::string& line, const std::string& word) {
     return line.substr(0, line.rfind(' ') + 1) + word;
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) {
-    return s.compare(0, prefix.size(), prefix) == 0;
-}
-
 using State = std::pair<Vector, Vector>;
 
 // The greatest intensity with which any branch reaches each state: Dijkstra
@@ -199,7 +195,7 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
             if (m < 0 || bound < m) m = bound;
         }
         for (std::size_t k = 0; k < lines.size(); ++k) {
-            if (!starts_with(lines[k], "lit ")) continue;
+            if (!lines[k].starts_with("lit ")) continue;
             // A lit target's intensity one more or one less than its witness.
             for (int delta : {-1, 1}) {
                 std::vector<std::string> t = lines;
@@ -217,7 +213,7 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
             t = lines;
             t[k] = "unlit " + lines[k].substr(4, lines[k].find(' ', 4) - 4);
             std::size_t end = k + 1;
-            while (end < t.size() && starts_with(t[end], "step ")) ++end;
+            while (end < t.size() && t[end].starts_with("step ")) ++end;
             t.erase(t.begin() + static_cast<std::ptrdiff_t>(k + 1),
                     t.begin() + static_cast<std::ptrdiff_t>(end));
             CHECK_FALSE(check(s, joined(t)).valid);
@@ -227,14 +223,14 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
         // A ray's start line lowered to m while the ray is brighter than m:
         // the closure misses it.
         for (std::size_t k = 0; k < lines.size(); ++k) {
-            if (!starts_with(lines[k], "branch ")) continue;
+            if (!lines[k].starts_with("branch ")) continue;
             const Integer listed(last_word(lines[k]));
             bool start = false;
             for (const Ray& r : s.rays) {
                 std::string head = "branch";
                 for (int j = 0; j < s.dim; ++j) head += ' ' + to_string(r.start[j]);
                 for (int j = 0; j < s.dim; ++j) head += ' ' + to_string(r.direction[j]);
-                start = start || (starts_with(lines[k], head + " intensity ") &&
+                start = start || (lines[k].starts_with(head + " intensity ") &&
                                   *r.intensity == listed && listed > m);
             }
             if (!start) continue;
@@ -270,7 +266,7 @@ TEST_CASE("each listed branch state has the greatest intensity reaching it",
         INFO(c.text);
         const std::map<State, Integer> greatest = greatest_intensities(s);
         for (const std::string& line : lines_of(c.text)) {
-            if (!starts_with(line, "branch ")) continue;
+            if (!line.starts_with("branch ")) continue;
             const auto [state, listed] = branch_line(line, s.dim);
             REQUIRE(greatest.count(state) == 1);
             CHECK(listed == greatest.at(state));

@@ -77,18 +77,14 @@ inline Certified certify(const Scene& scene, Engine engine,
     return certify(scene, options, format);
 }
 
-inline bool starts_with(const std::string& text, const std::string& prefix) {
-    return text.compare(0, prefix.size(), prefix) == 0;
-}
-
 // Asserts that a tampered certificate does not verify: either the verdict
 // is "invalid: ..." or the text is rejected as malformed.
 inline void expect_rejected(const Scene& scene, const std::string& text, const std::string& what) {
     const Outcome outcome = verify(scene, text);
     INFO("tampering: " << what << "\ncertificate:\n" << text << "verify said: " << outcome.message);
     CHECK_FALSE(outcome.valid);
-    CHECK_FALSE(starts_with(outcome.message, "valid"));
-    if (!outcome.input_error) CHECK(starts_with(outcome.message, "invalid"));
+    CHECK_FALSE(outcome.message.starts_with("valid"));
+    if (!outcome.input_error) CHECK(outcome.message.starts_with("invalid"));
 }
 
 } // namespace orthoray::test

@@ -23,10 +23,6 @@ inline bool has_raw_control_bytes(const std::string& s) {
     return false;
 }
 
-inline bool starts_with(const std::string& s, const std::string& prefix) {
-    return s.rfind(prefix, 0) == 0;
-}
-
 // Bad input: status 2, nothing on stdout, exactly one printable line on stderr.
 inline void require_bad_input(const CliResult& r) {
     INFO("stdout: " << r.out);
