@@ -68,17 +68,23 @@ public:
     }
     Link tail() const { return tail_; }
     Link prev(Link p) const { return prev_[p]; }
-    void prefetch_next(Link p) const { __builtin_prefetch(&next_[p], 1); }
 
     void remove(Link p) {
         (prev_[p] == none ? head_ : next_[prev_[p]]) = next_[p];
         (next_[p] == none ? tail_ : prev_[next_[p]]) = prev_[p];
     }
-    void insert_after(Link p, Link anchor) {
-        prev_[p] = anchor;
-        next_[p] = next_[anchor];
-        (next_[anchor] == none ? tail_ : prev_[next_[anchor]]) = p;
-        next_[anchor] = p;
+    // The block from `first` to the tail moves to right after `anchor`,
+    // keeping its own order; `anchor` is not in it. The links inside the
+    // block stay as they are: only its two ends are rewritten.
+    void move_tail_after(Link first, Link anchor) {
+        const Link last = tail_, before = prev_[first];
+        next_[before] = none;
+        tail_ = before;
+        const Link after = next_[anchor];
+        prev_[first] = anchor;
+        next_[anchor] = first;
+        next_[last] = after;
+        (after == none ? tail_ : prev_[after]) = last;
     }
     // p takes q's place; q leaves the order.
     void replace(Link q, Link p) {
@@ -193,7 +199,7 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         Link p = top ? r : d;
         // The walk is a chain of dependent misses; the loads it does not
         // depend on are issued along it. Each consumed piece's return time
-        // and `next` link are written right after the walk: fetch them now.
+        // is written right after the walk: fetch it now.
         // And the next step walks the other order back from w (a top run
         // leaves w last in the domain and the last walked piece last in the
         // image, so the next step is a bottom one with w among its losers, or
@@ -206,7 +212,6 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         while (p != w && total < length[w]) {
             walked.push_back(p);
             __builtin_prefetch(&piece.ret[p], 1);
-            losers.prefetch_next(p);
             total += length[p];
             p = losers.prev(p);
             ahead = winners.prev(ahead);
@@ -233,21 +238,23 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         }
         // Single steps against every loser whose running total stays below
         // l_w (all walked pieces but the last); the last one is compared again.
-        for (std::size_t i = 0; i + 1 < walked.size(); ++i) {
+        // One by one, each goes from the end of its order to right after w,
+        // so together they move as one block in their own order.
+        const std::size_t consumed = walked.size() - 1;
+        for (std::size_t i = 0; i < consumed; ++i) {
             const Link q = walked[i];
-            ++orbit.steps;
             if (top) {
                 if (observer) observer->top(w, q);
                 then(piece, q, w);
-                image.remove(q);
-                image.insert_after(q, w);
             } else {
                 if (observer) observer->bottom(w, q);
                 after(piece, q, w, Int(1));
-                domain.remove(q);
-                domain.insert_after(q, w);
             }
-            piece.length[w] -= length[q];
+        }
+        if (consumed > 0) {
+            orbit.steps += consumed;
+            (top ? image : domain).move_tail_after(walked[consumed - 1], w);
+            piece.length[w] -= total - length[walked[consumed]];
         }
     }
     orbit.arithmetic = lattice::arithmetic_used(Int{});
