@@ -6,6 +6,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
 
+#include "support/certificate_lines.hpp"
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -22,6 +23,9 @@ using orthoray::CertificateFormat;
 using orthoray::Scene;
 
 namespace {
+
+using orthoray::test::join;
+using orthoray::test::split_lines;
 
 using orthoray::test::instance_files;
 
@@ -44,19 +48,6 @@ std::string verify(const Scene& scene, const std::string& text) {
     }
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-std::string join(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) text += line + '\n';
-    return text;
-}
-
 const char* box = "dim 2\n"
                   "mirror x 0 y 0 5\nmirror x 3 y 0 5\nmirror y 0 x 0 3\nmirror y 5 x 0 3\n"
                   "ray 0 0 1 1\ntarget 3 5\n";
@@ -74,7 +65,7 @@ TEST_CASE("every instance's JSON Lines certificate verifies like its text one",
         CHECK(verdict == verify(scene, text));
         CHECK((verdict.rfind("valid: ", 0) == 0 || verdict.rfind("partial", 0) == 0));
         // Every line is a JSON object another tool reads without help.
-        const auto lines = lines_of(jsonl);
+        const auto lines = split_lines(jsonl);
         REQUIRE(lines.size() >= 4);
         for (const std::string& line : lines) CHECK(nlohmann::json::parse(line).is_object());
         CHECK(nlohmann::json::parse(lines.back()) == nlohmann::json{{"end", true}});
@@ -83,7 +74,7 @@ TEST_CASE("every instance's JSON Lines certificate verifies like its text one",
             return std::count_if(all.begin(), all.end(),
                                  [&](const std::string& l) { return l.rfind(prefix, 0) == 0; });
         };
-        CHECK(points(lines, "{\"point\"") == points(lines_of(text), "point "));
+        CHECK(points(lines, "{\"point\"") == points(split_lines(text), "point "));
     }
 }
 
@@ -103,7 +94,7 @@ TEST_CASE("the JSON Lines writer's text is exactly the documented format", "[cer
                    "{\"end\": true}\n");
     CHECK(verify(scene, jsonl) == "valid: hit, 6 reflections");
     // Key order inside a line does not matter.
-    auto lines = lines_of(jsonl);
+    auto lines = split_lines(jsonl);
     lines[8] = "{\"target\": [\"3\", \"5\"], \"reflections\": \"6\", \"reason\": \"hit\", "
                "\"answer\": \"yes\"}";
     lines[0] = "{\"dim\": 2, \"orthoray-certificate\": 1}";
@@ -112,7 +103,7 @@ TEST_CASE("the JSON Lines writer's text is exactly the documented format", "[cer
 
 TEST_CASE("tampered JSON Lines certificates are rejected", "[certificate][jsonl]") {
     const Scene scene = orthoray::read_scene(box);
-    const auto lines = lines_of(certify(scene, CertificateFormat::jsonl));
+    const auto lines = split_lines(certify(scene, CertificateFormat::jsonl));
     auto changed = [&](std::size_t index, const std::string& line) {
         auto copy = lines;
         copy[index] = line;
@@ -138,7 +129,7 @@ TEST_CASE("tampered JSON Lines certificates are rejected", "[certificate][jsonl]
 TEST_CASE("malformed JSON Lines are reported at their line and column",
           "[certificate][jsonl][errors]") {
     const Scene scene = orthoray::read_scene(box);
-    const auto lines = lines_of(certify(scene, CertificateFormat::jsonl));
+    const auto lines = split_lines(certify(scene, CertificateFormat::jsonl));
     auto changed = [&](std::size_t index, const std::string& line) {
         auto copy = lines;
         copy[index] = line;
@@ -163,7 +154,7 @@ TEST_CASE("malformed JSON Lines are reported at their line and column",
     // The cycle's state object holds exactly a point and a direction.
     const Scene square = orthoray::read_scene("dim 2\nmirror x 0 y 0 1\nmirror x 1 y 0 1\n"
                                               "ray 0 1/2 1 0\ntarget 5 5\n");
-    auto cycle = lines_of(certify(square, CertificateFormat::jsonl));
+    auto cycle = split_lines(certify(square, CertificateFormat::jsonl));
     REQUIRE(cycle[cycle.size() - 2].find("\"state\": {\"point\"") != std::string::npos);
     CHECK(verify(square, join(cycle)) == "valid: cycle, 2 reflections");
     std::string& verdict = cycle[cycle.size() - 2];

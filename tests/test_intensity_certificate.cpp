@@ -9,6 +9,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
 #include "support/case_count.hpp"
+#include "support/certificate_lines.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_optics.hpp"
 
@@ -23,6 +24,9 @@
 using namespace orthoray;
 
 namespace {
+
+using orthoray::test::join;
+using orthoray::test::split_lines;
 
 using Status = TargetAnswer::Status;
 
@@ -49,19 +53,6 @@ Certified certify(const Scene& scene, const Integer& eps, CertificateFormat form
 Verdict check(const Scene& scene, const std::string& text) {
     std::istringstream in(text);
     return verify_certificate(scene, in);
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) text += line + '\n';
-    return text;
 }
 
 // The last word of a line, and the line with it replaced.
@@ -187,7 +178,7 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
         REQUIRE(v.valid);
         ++verified;
         if (i % 4 == 1) continue; // the tampering below edits the text form
-        const std::vector<std::string> lines = lines_of(c.text);
+        const std::vector<std::string> lines = split_lines(c.text);
         // m: the least lit intensity, or the threshold when a target is unlit.
         Integer m = -1;
         for (const TargetAnswer& t : c.answer.targets) {
@@ -200,13 +191,13 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
             for (int delta : {-1, 1}) {
                 std::vector<std::string> t = lines;
                 t[k] = with_last_word(t[k], Integer(Integer(last_word(t[k])) + delta).get_str());
-                CHECK_FALSE(check(s, joined(t)).valid);
+                CHECK_FALSE(check(s, join(t)).valid);
                 ++lit_tampered;
             }
             // A threshold at that intensity: the witness is not above it.
             std::vector<std::string> t = lines;
             t[3] = "min-intensity " + last_word(lines[k]);
-            CHECK_FALSE(check(s, joined(t)).valid);
+            CHECK_FALSE(check(s, join(t)).valid);
             ++threshold_tampered;
             // The target claimed unlit (its witness removed), the verdict
             // left alone or made to agree: a stretch passes it.
@@ -216,7 +207,7 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
             while (end < t.size() && t[end].starts_with("step ")) ++end;
             t.erase(t.begin() + static_cast<std::ptrdiff_t>(k + 1),
                     t.begin() + static_cast<std::ptrdiff_t>(end));
-            CHECK_FALSE(check(s, joined(t)).valid);
+            CHECK_FALSE(check(s, join(t)).valid);
             ++unlit_tampered;
             break;
         }
@@ -236,7 +227,7 @@ TEST_CASE("intensity certificates of random scenes verify, and tampered ones fai
             if (!start) continue;
             std::vector<std::string> t = lines;
             t[k] = with_last_word(t[k], m.get_str());
-            CHECK_FALSE(check(s, joined(t)).valid);
+            CHECK_FALSE(check(s, join(t)).valid);
             ++start_tampered;
             break;
         }
@@ -265,7 +256,7 @@ TEST_CASE("each listed branch state has the greatest intensity reaching it",
         const Certified c = certify(s, eps, CertificateFormat::text);
         INFO(c.text);
         const std::map<State, Integer> greatest = greatest_intensities(s);
-        for (const std::string& line : lines_of(c.text)) {
+        for (const std::string& line : split_lines(c.text)) {
             if (!line.starts_with("branch ")) continue;
             const auto [state, listed] = branch_line(line, s.dim);
             REQUIRE(greatest.count(state) == 1);

@@ -5,6 +5,7 @@
 // closed forms of the diamond and the right triangle with sides 10^18 are
 // certified and verified.
 #include "support/case_count.hpp"
+#include "support/certificate_lines.hpp"
 #include "support/certificate_outcome.hpp"
 #include "support/octagonal_families.hpp"
 #include "support/portable_random.hpp"
@@ -27,6 +28,10 @@ using orthoray::test::Outcome;
 
 namespace {
 
+using orthoray::test::join;
+using orthoray::test::split_lines;
+using orthoray::test::tokens;
+
 using test::Certified;
 using test::certify;
 using test::diamond;
@@ -38,39 +43,19 @@ std::string expected_message(const Answer& a) {
            " reflections";
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-std::vector<std::string> words_of(const std::string& line) {
-    std::vector<std::string> words;
-    std::istringstream in(line);
-    for (std::string w; in >> w;) words.push_back(w);
-    return words;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) text += line + "\n";
-    return text;
-}
-
 // One numeric operand of one statement starting with `keyword` moved by
 // +-1..3; empty when the certificate has no such operand.
 std::string nudged(const std::string& text, const std::string& keyword, std::size_t operand,
                    std::mt19937_64& rng) {
-    std::vector<std::string> lines = lines_of(text);
+    std::vector<std::string> lines = split_lines(text);
     std::vector<std::size_t> candidates;
     for (std::size_t i = 0; i < lines.size(); ++i) {
-        const std::vector<std::string> w = words_of(lines[i]);
+        const std::vector<std::string> w = tokens(lines[i]);
         if (!w.empty() && w[0] == keyword && w.size() > operand) candidates.push_back(i);
     }
     if (candidates.empty()) return {};
     const std::size_t at = candidates[test::pick_index(rng, 0, candidates.size() - 1)];
-    std::vector<std::string> w = words_of(lines[at]);
+    std::vector<std::string> w = tokens(lines[at]);
     const int size = test::pick(rng, 1, 3); // before the sign: operands of * are unsequenced
     const int delta = test::chance(rng, 50) ? size : -size;
     const Integer n(w[operand]);
@@ -78,17 +63,17 @@ std::string nudged(const std::string& text, const std::string& keyword, std::siz
     w[operand] = (moved < 0 ? Integer(n - delta) : moved).get_str(); // counts stay >= 0
     lines[at].clear();
     for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
-    return joined(lines);
+    return join(lines);
 }
 
 // The certificate without its line starting with `prefix`; empty when it
 // has none.
 std::string without_line(const std::string& text, const std::string& prefix) {
-    std::vector<std::string> lines = lines_of(text);
+    std::vector<std::string> lines = split_lines(text);
     for (std::size_t i = 0; i < lines.size(); ++i)
         if (lines[i].rfind(prefix, 0) == 0) {
             lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(i));
-            return joined(lines);
+            return join(lines);
         }
     return {};
 }
@@ -96,35 +81,35 @@ std::string without_line(const std::string& text, const std::string& prefix) {
 // A cut piece's join moved by +-1..3 (a walk certificate's claim that the
 // ray steps there); empty when there is no cut piece.
 std::string join_nudged(const std::string& text, std::mt19937_64& rng) {
-    std::vector<std::string> lines = lines_of(text);
+    std::vector<std::string> lines = split_lines(text);
     std::vector<std::size_t> cuts;
     for (std::size_t i = 0; i < lines.size(); ++i)
-        if (lines[i].rfind("piece ", 0) == 0 && words_of(lines[i])[3] == "cut") cuts.push_back(i);
+        if (lines[i].rfind("piece ", 0) == 0 && tokens(lines[i])[3] == "cut") cuts.push_back(i);
     if (cuts.empty()) return {};
     const std::size_t at = cuts[test::pick_index(rng, 0, cuts.size() - 1)];
-    std::vector<std::string> w = words_of(lines[at]);
-    const Integer join(w[5]);
-    w[5] = Integer(join + test::pick(rng, 1, 3)).get_str();
+    std::vector<std::string> w = tokens(lines[at]);
+    const Integer cut_at(w[5]);
+    w[5] = Integer(cut_at + test::pick(rng, 1, 3)).get_str();
     lines[at].clear();
     for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
-    return joined(lines);
+    return join(lines);
 }
 
 // A piece's kind swapped for another: the claim about its states changes.
 std::string rekinded(const std::string& text, std::mt19937_64& rng) {
-    std::vector<std::string> lines = lines_of(text);
+    std::vector<std::string> lines = split_lines(text);
     std::vector<std::size_t> pieces;
     for (std::size_t i = 0; i < lines.size(); ++i)
         if (lines[i].rfind("piece ", 0) == 0) pieces.push_back(i);
     const std::size_t at = pieces[test::pick_index(rng, 0, pieces.size() - 1)];
-    std::vector<std::string> w = words_of(lines[at]);
+    std::vector<std::string> w = tokens(lines[at]);
     static const char* const kinds[] = {"reflect", "escape", "absorbed"};
     std::string other = w[3];
     while (other == w[3]) other = kinds[test::pick(rng, 0, 2)];
     w[3] = other;
     lines[at].clear();
     for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
-    return joined(lines);
+    return join(lines);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "orthoray/solve.hpp"
 #include "orthoray/state_graph.hpp"
 #include "support/case_count.hpp"
+#include "support/certificate_lines.hpp"
 #include "support/certificate_outcome.hpp"
 #include "support/random_octagonal.hpp"
 
@@ -160,18 +161,8 @@ TEST_CASE("branches, reference and graph illumination agree on random octagonal 
 
 namespace {
 
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) text += line + "\n";
-    return text;
-}
+using orthoray::test::join;
+using orthoray::test::split_lines;
 
 // The first line starting with `keyword` (and a space), with the count
 // after its word "reflections" raised by one; "" when there is none.
@@ -188,7 +179,7 @@ std::string raise_reflections(std::vector<std::string> lines, const std::string&
             raised += Integer(Integer(word) + 1).get_str();
         }
         line = raised;
-        return joined(lines);
+        return join(lines);
     }
     return "";
 }
@@ -228,7 +219,7 @@ TEST_CASE("certificates of random octagonal scenes verify, tampered ones fail",
             CHECK(outcome.message.find(std::string("valid: ") + to_string(a.reason)) == 0);
             if (format == CertificateFormat::jsonl) continue;
 
-            const std::vector<std::string> lines = lines_of(out.str());
+            const std::vector<std::string> lines = split_lines(out.str());
             if (!a.illumination()) {
                 ++single;
                 tails += a.reason == Reason::cycle && a.tail > 0;
@@ -241,7 +232,7 @@ TEST_CASE("certificates of random octagonal scenes verify, tampered ones fail",
                     const Rational x = Rational(lines[3].substr(6, space - 6)) + Rational(1, 7);
                     shifted[3] = "point " + to_string(x) + lines[3].substr(space);
                     ++moved;
-                    test::expect_invalid(s, joined(shifted), "first meets an element");
+                    test::expect_invalid(s, join(shifted), "first meets an element");
                 }
                 continue;
             }
@@ -259,7 +250,7 @@ TEST_CASE("certificates of random octagonal scenes verify, tampered ones fail",
                 std::vector<std::string> fewer = lines;
                 fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(k));
                 ++dropped;
-                CHECK_FALSE(test::verify(s, joined(fewer)).valid);
+                CHECK_FALSE(test::verify(s, join(fewer)).valid);
                 break;
             }
         }
