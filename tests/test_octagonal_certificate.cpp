@@ -31,6 +31,7 @@ namespace {
 using orthoray::test::join;
 using orthoray::test::split_lines;
 using orthoray::test::tokens;
+using orthoray::test::untokens;
 
 using test::Certified;
 using test::certify;
@@ -61,8 +62,7 @@ std::string nudged(const std::string& text, const std::string& keyword, std::siz
     const Integer n(w[operand]);
     const Integer moved = n + delta;
     w[operand] = (moved < 0 ? Integer(n - delta) : moved).get_str(); // counts stay >= 0
-    lines[at].clear();
-    for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
+    lines[at] = untokens(w);
     return join(lines);
 }
 
@@ -90,8 +90,7 @@ std::string join_nudged(const std::string& text, std::mt19937_64& rng) {
     std::vector<std::string> w = tokens(lines[at]);
     const Integer cut_at(w[5]);
     w[5] = Integer(cut_at + test::pick(rng, 1, 3)).get_str();
-    lines[at].clear();
-    for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
+    lines[at] = untokens(w);
     return join(lines);
 }
 
@@ -107,8 +106,7 @@ std::string rekinded(const std::string& text, std::mt19937_64& rng) {
     std::string other = w[3];
     while (other == w[3]) other = kinds[test::pick(rng, 0, 2)];
     w[3] = other;
-    lines[at].clear();
-    for (const std::string& x : w) lines[at] += (lines[at].empty() ? "" : " ") + x;
+    lines[at] = untokens(w);
     return join(lines);
 }
 
