@@ -54,7 +54,7 @@ def parse(text):
     return dim, elements, rays, targets
 
 
-def axis_hit(e, p, v, dim):
+def axis_hit(e, p, v):
     """t > 0 where the ray meets axis element e and e acts on it, else None.
     optics.md: it acts when q lies on it (edges included), v_k != 0, and it
     is two-sided or its sign names the side the ray arrives from."""
@@ -97,7 +97,7 @@ def event(dim, elements, p, v):
     absorbed), or None when the ray escapes."""
     best, acting = None, []
     for e in elements:
-        t = diagonal_hit(e, p, v) if "slope" in e else axis_hit(e, p, v, dim)
+        t = diagonal_hit(e, p, v) if "slope" in e else axis_hit(e, p, v)
         if t is None:
             continue
         if best is None or t < best:
