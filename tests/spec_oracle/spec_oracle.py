@@ -217,6 +217,9 @@ def illumination(dim, elements, rays, targets, max_states):
         "targets": [{"target": i, "answer": "no"} if b is None else
                     {"target": i, "answer": "yes", "reflections": b[0], "ray": b[1]}
                     for i, b in enumerate(best, 1)],
+        # optics.md's "distinct states explored": this search explores every
+        # state reachable, rays' starts included.
+        "states": len(label),
     }
 
 

@@ -141,6 +141,11 @@ def spec_fields(answer, oracle):
     keys = ["answer", "reason"]
     keys += ["targets"] if "targets" in oracle else \
         [k for k in ("reflections", "tail", "period") if k in oracle]
+    # With a target unlit every reachable state was explored, so `states`
+    # is the reachable set's size; a search that lights every target may
+    # stop before that, at a point no other search need share.
+    if "states" in oracle and oracle["answer"] == "no":
+        keys.append("states")
     return {k: answer.get(k) for k in keys}
 
 

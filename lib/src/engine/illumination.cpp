@@ -19,6 +19,7 @@
 #include "engine/branch_search_answer.hpp"
 #include "engine/branch_state_set.hpp"
 #include "engine/branch_witness.hpp"
+#include "engine/explored_states.hpp"
 #include "engine/lattice_stepper.hpp"
 #include "engine/stretch.hpp"
 
@@ -85,7 +86,9 @@ public:
                 owned_ = fastest_stepper(scene_, lattice::SetupPoll(options_.monitor, 0));
                 stepper_ = owned_.get();
             }
+            explored_.emplace(*stepper_, budget_);
             search();
+            if (!limit_) count_explored();
         } catch (const std::bad_alloc&) {
             limit_ = Limit::memory;
         } catch (const lattice::SetupStopped& stopped) {
@@ -108,6 +111,7 @@ private:
                 limit_ = Limit::memory;
                 return;
             }
+            ray_starts_.push_back(*state);
             // A target at a ray's start is lit with 0 reflections before
             // any event is stepped, so even a cap of 0 steps reports it (it
             // is final once no ray numbered lower is still waiting).
@@ -235,6 +239,10 @@ private:
             });
         if (finished_) return true;
         if (end.kind == StretchEnd::Kind::stopped) return false;
+        if (!explored_->walked(b, end)) {
+            limit_ = Limit::memory;
+            return false;
+        }
         if (end.kind != StretchEnd::Kind::junction) return true;
         for (const Outgoing& out : end.outgoing) {
             const Label child{label.reflections + end.reflections + (out.reflection ? 1 : 0),
@@ -245,6 +253,12 @@ private:
             }
         }
         return true;
+    }
+
+    // The distinct states explored (explored_states.hpp); at a limit there
+    // is no time to walk again, and the branch states stored stand for it.
+    void count_explored() {
+        explored_count_ = explored_->count(states_, ray_starts_, [&] { return poll(); });
     }
 
     Answer conclude() {
@@ -272,7 +286,8 @@ private:
             target.best_proven = !(limit_ && least && *least < c.label);
             return true;
         });
-        answer.states = Integer(static_cast<unsigned long>(states_.size()));
+        answer.states = Integer(static_cast<unsigned long>(
+            explored_count_ && !limit_ ? *explored_count_ : states_.size()));
         answer.stats.illumination = {expanded_, events_, budget_.used()};
         return answer;
     }
@@ -306,6 +321,9 @@ private:
     std::vector<Record> records_;
     std::vector<Waiting> queue_; // a binary heap, least label on top
     std::vector<Candidate> best_;
+    std::vector<std::uint32_t> ray_starts_; // each ray's branch state
+    std::optional<ExploredStates> explored_;
+    std::optional<std::uint64_t> explored_count_;
     std::optional<Limit> limit_;
     // The least label the stretch being walked can still offer (its branch
     // state's, raised by the reflections walked): the least still open.

@@ -242,8 +242,8 @@ private:
         if (end.kind == StretchEnd::Kind::stopped) return faded;
         if (end.kind != StretchEnd::Kind::junction) return true;
         for (const Outgoing& out : end.outgoing) {
-            const Integer child = attenuated(
-                intensity, outgoing_factor(junction_acting, end.incoming, out.direction));
+            const Integer child =
+                attenuated(intensity, outgoing_factor(junction_acting, end.last.v, out.direction));
             if (child <= threshold_) continue;
             if (!reach(end.point, out.direction, child,
                        reflections + end.reflections + (out.reflection ? 1 : 0), ray, b)) {

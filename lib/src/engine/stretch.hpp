@@ -10,9 +10,15 @@
 #include "engine/event_stepper.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace orthoray::engine {
+
+struct StretchState {
+    Vector p, v;
+    bool operator==(const StretchState&) const = default;
+};
 
 struct StretchEnd {
     enum class Kind {
@@ -25,15 +31,18 @@ struct StretchEnd {
     Kind kind = Kind::stopped;
     // Reflections along the stretch before its end (before the junction's event).
     std::uint64_t reflections = 0;
-    // junction: the event point, the direction arriving there, and every
-    // direction leaving it (one, where only another arrival would split).
-    Vector point, incoming;
+    // The states visited, s_0 included (on a cycle, every one up to the
+    // repeat that Brent's method noticed, so some twice).
+    std::uint64_t visited = 0;
+    // escape, absorbed, junction: the stretch's last state, whose segment
+    // ends it (at a junction, `last.v` is the direction arriving there).
+    StretchState last;
+    // cycle: the least period.
+    std::uint64_t period = 0;
+    // junction: the event point, and every direction leaving it (one, where
+    // only another arrival would split).
+    Vector point;
     std::vector<Outgoing> outgoing;
-};
-
-struct StretchState {
-    Vector p, v;
-    bool operator==(const StretchState&) const = default;
 };
 
 // Walks the stretch from (p, v). For each of its states s_0 = (p, v),
@@ -47,24 +56,26 @@ StretchEnd walk_stretch(const EventStepper& stepper, Vector p, Vector v, Visit&&
     StretchState s{std::move(p), std::move(v)}; // the detector copies it only when it saves it
     for (std::uint64_t i = 1;; ++i) {
         // A state seen before: everything from here on repeats.
-        if (detector.observe(s, i)) {
+        if (const std::optional<std::uint64_t> period = detector.observe(s, i)) {
             end.kind = StretchEnd::Kind::cycle;
+            end.period = *period;
             return end;
         }
         ReferenceEvent e = stepper.next(s.p, s.v);
+        ++end.visited;
         if (!visit(s.p, s.v, end.reflections, e)) {
             end.kind = StretchEnd::Kind::stopped;
             return end;
         }
-        if (e.escape || e.absorbed) {
-            end.kind = e.escape ? StretchEnd::Kind::escape : StretchEnd::Kind::absorbed;
-            return end;
-        }
-        if (e.junction) {
-            end.kind = StretchEnd::Kind::junction;
-            end.point = std::move(e.point);
-            end.incoming = std::move(s.v);
-            end.outgoing = std::move(e.outgoing);
+        if (e.escape || e.absorbed || e.junction) {
+            end.kind = e.escape     ? StretchEnd::Kind::escape
+                       : e.absorbed ? StretchEnd::Kind::absorbed
+                                    : StretchEnd::Kind::junction;
+            if (e.junction) {
+                end.point = std::move(e.point);
+                end.outgoing = std::move(e.outgoing);
+            }
+            end.last = std::move(s);
             return end;
         }
         if (e.outgoing.front().reflection) ++end.reflections;
