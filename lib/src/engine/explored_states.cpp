@@ -3,6 +3,7 @@
 #include "engine/branch_state_set.hpp"
 
 #include <algorithm>
+#include <new>
 #include <tuple>
 
 namespace orthoray::engine {
@@ -33,12 +34,14 @@ std::uint64_t hash_of(const StretchState& s) {
 }
 
 // A stretch, or a cycle's tail, as the grouping sees it: `length` states
-// from `branch`'s, the last of them hashed to `end`.
+// from `branch`'s, the last of them hashed to `end`; `whole` the distinct
+// states of the walk it came from (a tail's with its cycle's).
 struct Path {
     std::uint32_t branch;
     bool tail; // of a cycle: the last state is the cycle's entry
     std::uint64_t length;
     std::uint64_t end;
+    std::uint64_t whole;
 };
 
 // A cycle entered by a stretch: the state entering it and its period.
@@ -108,7 +111,7 @@ public:
 
     // The distinct states of the paths, grouped by end; a tail's last
     // state, its cycle's entry, is the cycle's and counted there.
-    std::optional<std::uint64_t> paths(std::vector<Path> sorted) {
+    std::optional<std::uint64_t> paths(std::vector<Path>& sorted) {
         std::sort(sorted.begin(), sorted.end(), [](const Path& a, const Path& b) {
             return std::tie(a.tail, a.end) < std::tie(b.tail, b.end);
         });
@@ -129,18 +132,16 @@ public:
         return total;
     }
 
-    // How many of `loose` lie on the paths' walks, `whole[i]` distinct
-    // states from path i's first.
+    // How many of `loose` lie on the walks the paths came from.
     std::optional<std::uint64_t> inside(const std::vector<Path>& paths,
-                                        const std::vector<std::uint64_t>& whole,
                                         std::vector<StretchState> loose) {
         const std::size_t had = loose.size();
         for (std::size_t i = 0; i < paths.size() && !loose.empty(); ++i) {
             StretchState s = start(paths[i].branch);
-            for (std::uint64_t k = 0; k < whole[i]; ++k) {
+            for (std::uint64_t k = 0; k < paths[i].whole; ++k) {
                 const auto found = std::find(loose.begin(), loose.end(), s);
                 if (found != loose.end()) loose.erase(found);
-                if (k + 1 < whole[i] && !step(s)) return std::nullopt;
+                if (k + 1 < paths[i].whole && !step(s)) return std::nullopt;
             }
         }
         return had - loose.size();
@@ -233,22 +234,27 @@ bool ExploredStates::walked(std::uint32_t branch, const StretchEnd& end) {
 std::optional<std::uint64_t> ExploredStates::count(const BranchStateSet& branches,
                                                    const std::vector<std::uint32_t>& ray_starts,
                                                    const std::function<bool()>& keep_going) const {
+    // The count's own arrays are held to the search's budget too.
+    const std::size_t cycle_walks = static_cast<std::size_t>(
+        std::count_if(walked_.begin(), walked_.end(), [](const Walked& w) { return w.cycle; }));
+    if (!budget_.fits(walked_.size() * sizeof(Path) + cycle_walks * sizeof(Cycle) +
+                      branches.size() / 8))
+        throw std::bad_alloc();
     Rewalk rewalk(stepper_, branches, keep_going);
     // Each walk as a path, a cycle's cut at its entry, and the cycles apart.
     std::vector<Path> paths;
     std::vector<Cycle> cycles;
-    std::vector<std::uint64_t> whole; // each walk's distinct states, for the rays' starts below
+    paths.reserve(walked_.size());
+    cycles.reserve(cycle_walks);
     for (const Walked& w : walked_) {
         if (!w.cycle) {
-            paths.push_back({w.branch, false, w.visited, w.last_or_period});
-            whole.push_back(w.visited);
+            paths.push_back({w.branch, false, w.visited, w.last_or_period, w.visited});
             continue;
         }
         auto found = rewalk.entry(w.branch, w.last_or_period);
         if (!found) return std::nullopt;
         auto& [mu, entry] = *found;
-        paths.push_back({w.branch, true, mu + 1, hash_of(entry)});
-        whole.push_back(mu + w.last_or_period);
+        paths.push_back({w.branch, true, mu + 1, hash_of(entry), mu + w.last_or_period});
         cycles.push_back({std::move(entry), w.last_or_period});
     }
     const std::optional<std::uint64_t> on_cycles = rewalk.cycles(cycles);
@@ -265,7 +271,7 @@ std::optional<std::uint64_t> ExploredStates::count(const BranchStateSet& branche
             walked[r] = true; // two rays from one state: one branch state
             loose.push_back(rewalk.start(r));
         }
-    const std::optional<std::uint64_t> inside = rewalk.inside(paths, whole, loose);
+    const std::optional<std::uint64_t> inside = rewalk.inside(paths, std::move(loose));
     if (!inside) return std::nullopt;
     return *on_cycles + *on_paths + (branches.size() - walked_.size()) - *inside;
 }

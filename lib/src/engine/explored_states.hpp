@@ -59,7 +59,8 @@ public:
     // are the rays' branch states: the only branch states that can lie
     // inside another stretch (a state leaving a junction only begins one,
     // as every event at a junction ends a stretch). `keep_going` is
-    // asked every few hundred steps; nullopt once it says no.
+    // asked every few hundred steps; nullopt once it says no. Throws
+    // std::bad_alloc when its arrays would pass the budget.
     std::optional<std::uint64_t> count(const BranchStateSet& branches,
                                        const std::vector<std::uint32_t>& ray_starts,
                                        const std::function<bool()>& keep_going) const;
