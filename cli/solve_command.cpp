@@ -65,7 +65,8 @@ void print_text(const Answer& a, const std::string& engine, double seconds) {
     if (a.reason == Reason::cycle && a.tail != 0)
         std::printf("tail         %s\n", a.tail.get_str().c_str());
     if (a.illumination())
-        std::printf("states       %s\n", a.states.get_str().c_str());
+        std::printf("states       %s%s\n", a.states.get_str().c_str(),
+                    a.states_lower_bound ? " (at least)" : "");
     else
         std::printf("%-12s %s\n", a.reason == Reason::cycle ? "period" : "reflections",
                     (a.reason == Reason::cycle ? a.period() : a.reflections).get_str().c_str());

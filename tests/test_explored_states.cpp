@@ -4,6 +4,7 @@
 // unexpanded inside a stretch walked. The property tests of
 // test_illumination.cpp hold the count to the state graph on thousands of
 // random scenes.
+#include "orthoray/answer_json.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
 #include "orthoray/state_graph.hpp"
@@ -16,6 +17,10 @@
 using namespace orthoray;
 
 namespace {
+
+const std::string box_with_splitter =
+    "dim 2\nmirror x 0 y 0 5\nmirror x 7 y 0 5\nmirror y 0 x 0 7\nmirror y 5 x 0 7\n"
+    "splitter x 3 y 1 4\nray 1 1 1 2\ntarget 100 100\ntarget 2 3\n";
 
 // Every target unlit, so every reachable state is explored: the branch
 // search's count must be `states`, and so must the state graph's.
@@ -70,10 +75,50 @@ TEST_CASE("a closed box with a splitter: every reachable state", "[explored_stat
     // The stretches from ray 1's start and from a state leaving the
     // splitter merge (the ray starts between events), so the sum of their
     // lengths would be 50.
-    check_explored("dim 2\nmirror x 0 y 0 5\nmirror x 7 y 0 5\nmirror y 0 x 0 7\n"
-                   "mirror y 5 x 0 7\nsplitter x 3 y 1 4\nray 1 1 1 2\n"
-                   "target 100 100\ntarget 2 3\n",
-                   45);
+    check_explored(box_with_splitter, 45);
+}
+
+TEST_CASE("a limit met while counting keeps the answer and flags the count", "[explored_states]") {
+    // Byte budgets from what the search ends up holding upwards: below some
+    // budget the search stops (a memory limit), above it the count too
+    // finds room; in between the search answers and the count, whose
+    // arrays find none, is given up.
+    const Scene s = read_scene(box_with_splitter);
+    const Answer full = solve(s);
+    REQUIRE(full.reason == Reason::unlit);
+    CHECK_FALSE(full.states_lower_bound);
+    CHECK(answer_json_members(full, "auto", 0).find("states_lower_bound") == std::string::npos);
+    int stopped = 0, given_up = 0, counted = 0;
+    for (std::size_t extra = 0; extra < 4096; extra += 8) {
+        SolveOptions tight;
+        tight.max_state_bytes = full.stats.illumination.state_bytes + extra;
+        const Answer a = solve(s, tight);
+        CHECK(a.states_lower_bound == (a.reason == Reason::limit || a.states != full.states));
+        if (a.reason == Reason::limit) {
+            CHECK(counted + given_up == 0); // more room never stops the search
+            ++stopped;
+            continue;
+        }
+        CHECK(a.reason == Reason::unlit);
+        REQUIRE(a.targets.size() == full.targets.size());
+        for (std::size_t t = 0; t < a.targets.size(); ++t) {
+            CHECK(a.targets[t].status == full.targets[t].status);
+            CHECK(a.targets[t].reflections == full.targets[t].reflections);
+        }
+        if (a.states_lower_bound) {
+            CHECK(counted == 0);
+            CHECK(a.states == 9); // the branch states stored
+            CHECK(answer_json_members(a, "auto", 0).find(",\"states_lower_bound\":true") !=
+                  std::string::npos);
+            ++given_up;
+        } else {
+            CHECK(a.states == full.states);
+            ++counted;
+        }
+    }
+    CHECK(stopped > 0);
+    CHECK(given_up > 0);
+    CHECK(counted > 0);
 }
 
 TEST_CASE("explored states equal the state graph's where many rays share cycles",

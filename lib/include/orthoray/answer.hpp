@@ -66,12 +66,13 @@ struct Answer {
     // period is reflections - tail.
     Integer tail;
     // The illumination question: one entry per target, in file order, and
-    // the number of branch states stored (rays' starts and states leaving a
-    // junction, an event point where some arrival has two or more outgoing
-    // directions, docs/optics.md; the graph engine counts every state
-    // instead). Empty for a single trajectory.
+    // the number of distinct states explored (docs/optics.md, "What
+    // `states` means"). Empty for a single trajectory.
     std::vector<TargetAnswer> targets;
     Integer states;
+    // True when `states` is only a lower bound: a limit stopped the run, or
+    // the count after the search, before every state was counted.
+    bool states_lower_bound = false;
     Limit limit = Limit::steps; // which limit, when reason is Reason::limit
     EngineUsed engine = EngineUsed::none;
     ArithmeticUsed arithmetic = ArithmeticUsed::none;

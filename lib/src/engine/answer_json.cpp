@@ -37,6 +37,7 @@ void write_targets(std::ostream& out, const Answer& a) {
         }
     }
     out << "],\"states\":" << a.states.get_str();
+    if (a.states_lower_bound) out << ",\"states_lower_bound\":true";
 }
 
 } // namespace

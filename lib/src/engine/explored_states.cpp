@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <new>
 #include <tuple>
+#include <unordered_map>
 
 namespace orthoray::engine {
 namespace {
@@ -87,24 +88,35 @@ public:
         return std::pair{mu, std::move(behind)};
     }
 
-    // The states of the distinct cycles, each entered by some walk.
+    // The states of the distinct cycles, each entered by some walk. Only
+    // cycles of one period and least hash can be one, so only those are
+    // compared, by walking.
     std::optional<std::uint64_t> cycles(std::vector<Cycle>& entered) {
         if (entered.size() > 1)
             for (Cycle& c : entered)
                 if (!name(c)) return std::nullopt;
-        std::vector<const Cycle*> distinct;
+        std::sort(entered.begin(), entered.end(), [](const Cycle& a, const Cycle& b) {
+            return std::tie(a.period, a.least_hash) < std::tie(b.period, b.least_hash);
+        });
         std::uint64_t total = 0;
-        for (const Cycle& c : entered) {
-            bool seen = false;
-            for (const Cycle* d : distinct) {
-                const std::optional<bool> one = same(*d, c);
-                if (!one) return std::nullopt;
-                if ((seen = *one)) break;
+        for (auto first = entered.begin(); first != entered.end();) {
+            const auto last = std::find_if(first, entered.end(), [&](const Cycle& c) {
+                return c.period != first->period || c.least_hash != first->least_hash;
+            });
+            std::vector<const Cycle*> distinct;
+            for (auto c = first; c != last; ++c) {
+                bool seen = false;
+                for (const Cycle* d : distinct) {
+                    const std::optional<bool> one = same(*d, *c);
+                    if (!one) return std::nullopt;
+                    if ((seen = *one)) break;
+                }
+                if (!seen) {
+                    distinct.push_back(&*c);
+                    total += c->period;
+                }
             }
-            if (!seen) {
-                distinct.push_back(&c);
-                total += c.period;
-            }
+            first = last;
         }
         return total;
     }
@@ -132,19 +144,28 @@ public:
         return total;
     }
 
-    // How many of `loose` lie on the walks the paths came from.
+    // How many of `loose` lie on the walks the paths came from, looked up
+    // by hash.
     std::optional<std::uint64_t> inside(const std::vector<Path>& paths,
-                                        std::vector<StretchState> loose) {
-        const std::size_t had = loose.size();
-        for (std::size_t i = 0; i < paths.size() && !loose.empty(); ++i) {
+                                        const std::vector<StretchState>& loose) {
+        if (loose.empty()) return 0;
+        std::unordered_multimap<std::uint64_t, std::size_t> by_hash;
+        for (std::size_t j = 0; j < loose.size(); ++j) by_hash.emplace(hash_of(loose[j]), j);
+        std::vector<bool> found(loose.size());
+        std::uint64_t inside = 0;
+        for (std::size_t i = 0; i < paths.size() && inside < loose.size(); ++i) {
             StretchState s = start(paths[i].branch);
             for (std::uint64_t k = 0; k < paths[i].whole; ++k) {
-                const auto found = std::find(loose.begin(), loose.end(), s);
-                if (found != loose.end()) loose.erase(found);
+                const auto [first, last] = by_hash.equal_range(hash_of(s));
+                for (auto it = first; it != last; ++it)
+                    if (!found[it->second] && loose[it->second] == s) {
+                        found[it->second] = true;
+                        ++inside;
+                    }
                 if (k + 1 < paths[i].whole && !step(s)) return std::nullopt;
             }
         }
-        return had - loose.size();
+        return inside;
     }
 
 private:
@@ -271,7 +292,7 @@ std::optional<std::uint64_t> ExploredStates::count(const BranchStateSet& branche
             walked[r] = true; // two rays from one state: one branch state
             loose.push_back(rewalk.start(r));
         }
-    const std::optional<std::uint64_t> inside = rewalk.inside(paths, std::move(loose));
+    const std::optional<std::uint64_t> inside = rewalk.inside(paths, loose);
     if (!inside) return std::nullopt;
     return *on_cycles + *on_paths + (branches.size() - walked_.size()) - *inside;
 }

@@ -9,7 +9,8 @@
 // deterministic, so two stretches that meet in a state coincide from there
 // to their common end, the same last state before the same junction, escape
 // or absorption, or the same cycle entered at the same state. Between
-// two-sided elements the step is injective on states after events, so
+// two-sided axis-aligned elements the step is injective on states after
+// events, so
 // stretches of states leaving junctions never merge; but a ray may start
 // between events, and the state after its first event may be in another
 // stretch too. One-sided elements and diagonals send two states to one, and

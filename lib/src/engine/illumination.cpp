@@ -178,12 +178,17 @@ private:
 
     // Polls the monitor about every 10 ms; false (limit_ set) to stop.
     bool poll() {
-        if (!options_.monitor) return true;
-        const Clock::time_point now = Clock::now();
-        if (now < next_poll_) return true;
-        next_poll_ = now + std::chrono::milliseconds(10);
-        limit_ = options_.monitor->poll(expanded_);
+        limit_ = ask_monitor();
         return !limit_;
+    }
+
+    // The limit the monitor reports, asked about every 10 ms.
+    std::optional<Limit> ask_monitor() {
+        if (!options_.monitor) return std::nullopt;
+        const Clock::time_point now = Clock::now();
+        if (now < next_poll_) return std::nullopt;
+        next_poll_ = now + std::chrono::milliseconds(10);
+        return options_.monitor->poll(expanded_);
     }
 
     // Reaches (p, v) with `label` from `parent`: its branch state's number,
@@ -255,10 +260,17 @@ private:
         return true;
     }
 
-    // The distinct states explored (explored_states.hpp); at a limit there
-    // is no time to walk again, and the branch states stored stand for it.
+    // The distinct states explored (explored_states.hpp). The search has
+    // answered by now, so a limit met while counting (time, a signal,
+    // memory) leaves the answer as it is and `states` at the branch states
+    // stored, a lower bound, as after a limit in the search.
     void count_explored() {
-        explored_count_ = explored_->count(states_, ray_starts_, [&] { return poll(); });
+        try {
+            explored_count_ =
+                explored_->count(states_, ray_starts_, [&] { return !ask_monitor(); });
+        } catch (const std::bad_alloc&) {
+            explored_count_.reset();
+        }
     }
 
     Answer conclude() {
@@ -286,8 +298,9 @@ private:
             target.best_proven = !(limit_ && least && *least < c.label);
             return true;
         });
-        answer.states = Integer(static_cast<unsigned long>(
-            explored_count_ && !limit_ ? *explored_count_ : states_.size()));
+        answer.states = Integer(
+            static_cast<unsigned long>(explored_count_ ? *explored_count_ : states_.size()));
+        answer.states_lower_bound = !explored_count_;
         answer.stats.illumination = {expanded_, events_, budget_.used()};
         return answer;
     }

@@ -141,6 +141,7 @@ Answer explore_illumination_graph(const Scene& scene, std::uint64_t max_states, 
         all = all && lit[t] && target.best_proven;
     }
     answer.states = Integer(static_cast<unsigned long>(n - 1));
+    answer.states_lower_bound = stopped.has_value();
     // Every target lit with a proven count answers the question whatever
     // the limit left unexplored.
     if (stopped && !all) {

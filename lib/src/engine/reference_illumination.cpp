@@ -64,6 +64,7 @@ Answer solve_illumination_by_reference(const Scene& scene, const SolveOptions& o
         answer.reason = Reason::limit;
         answer.limit = limit;
         answer.states = Integer(static_cast<unsigned long>(states.size()));
+        answer.states_lower_bound = true;
         return answer;
     };
     try {
