@@ -45,10 +45,11 @@ struct StretchEnd {
     std::vector<Outgoing> outgoing;
 };
 
-// Walks the stretch from (p, v). For each of its states s_0 = (p, v),
-// s_1, ... (each seen once, also on a cycle) it calls
-// visit(point, direction, w, event): w the reflections before that state's
-// segment, `event` where the segment ends. A false return stops the walk.
+// Walks the stretch from (p, v). For each of its states s_0 = (p, v), s_1,
+// ... (on a cycle some twice, before Brent's method sees the repeat) it
+// calls visit(point, direction, w, event): w the reflections before that
+// state's segment, `event` where the segment ends. A false return stops the
+// walk.
 template <class Visit>
 StretchEnd walk_stretch(const EventStepper& stepper, Vector p, Vector v, Visit&& visit) {
     BrentDetector<StretchState> detector;
