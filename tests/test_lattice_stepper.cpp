@@ -67,21 +67,29 @@ TEST_CASE("the lattice stepper finds the reference scan's events on random branc
         INFO("case " << i << "\n" << write_scene(s));
         const engine::LatticeStepper fast(s);
         const engine::ReferenceStepper plain(s);
-        for (const Ray& ray : s.rays) {
-            Vector p = ray.start, v = ray.direction;
-            for (int step = 0; step < 40; ++step) {
-                const engine::ReferenceEvent e = plain.next(p, v);
-                require_same(fast.next(p, v), e);
+        // The rays take turns, so the stepper switches lattices at every
+        // step where the scene's rays lie on several.
+        struct Branch {
+            Vector p, v;
+            bool done = false;
+        };
+        std::vector<Branch> branches;
+        for (const Ray& ray : s.rays) branches.push_back({ray.start, ray.direction});
+        for (int step = 0; step < 40; ++step)
+            for (Branch& b : branches) {
+                if (b.done) continue;
+                const engine::ReferenceEvent e = plain.next(b.p, b.v);
+                require_same(fast.next(b.p, b.v), e);
                 ++events;
                 if (e.escape || e.absorbed) {
                     absorbed += e.absorbed;
-                    break;
+                    b.done = true;
+                    continue;
                 }
                 splits += e.outgoing.size() > 1;
-                p = e.point;
-                v = e.outgoing[test::pick_index(rng, 0, e.outgoing.size() - 1)].direction;
+                b.p = e.point;
+                b.v = e.outgoing[test::pick_index(rng, 0, e.outgoing.size() - 1)].direction;
             }
-        }
     }
     // The branches met every kind of event.
     // (15,023 events, 2,275 splits and 373 absorptions at full size.)
@@ -101,4 +109,33 @@ TEST_CASE("a state off every ray's lattice is refused, not answered", "[illumina
     // Neither is a point between the lattice's points.
     CHECK_THROWS_AS(stepper.next(Vector{Rational(1, 3), 0, 0}, s.ray().direction),
                     std::logic_error);
+}
+
+TEST_CASE("rays on one line of directions but different lattices are told apart",
+          "[illumination]") {
+    // Both rays move along (1, 1) with nothing held fixed, so they share a
+    // lookup key; the second starts at a third, so its lattice is three
+    // times finer and the first's does not hold it.
+    const Scene s = parse_scene("dim 2\nmirror x 6 y -10 10\nmirror x 0 y -10 10\n"
+                                "ray 0 0 1 1\nray 1/3 0 1 1\nray 2 -3 1 0\nray 4 -3 1 0\n"
+                                "target 50 50\n",
+                                "s.scene", SceneFormat::text);
+    const engine::LatticeStepper fast(s);
+    const engine::ReferenceStepper plain(s);
+    // Alternate between the rays, each from its start and from its first
+    // event, so that every lookup comes after a switch.
+    for (int round = 0; round < 2; ++round)
+        for (const Ray& ray : s.rays) {
+            Vector p = ray.start, v = ray.direction;
+            for (int step = 0; step < round; ++step) {
+                const engine::ReferenceEvent e = plain.next(p, v);
+                p = e.point;
+                v = e.outgoing.front().direction;
+            }
+            INFO("ray from " << ray.start[0] << "," << ray.start[1] << ", round " << round);
+            require_same(fast.next(p, v), plain.next(p, v));
+        }
+    // A point of the finer lattice on neither ray's line is still refused
+    // where the key matches neither lattice's scale.
+    CHECK_THROWS_AS(fast.next(Vector{Rational(1, 5), 0, 0}, Vector{1, 1, 0}), std::logic_error);
 }

@@ -143,18 +143,30 @@ LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& pol
     const auto begin = std::chrono::steady_clock::now();
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
         const Ray& ray = scene.rays[r];
+        std::vector<std::size_t>& same_key = by_key_[key_of(ray.start, ray.direction)];
         // A ray whose start state an earlier lattice holds has all its
         // branches there too.
-        const bool held = std::any_of(lattices_.begin(), lattices_.end(), [&](const auto& l) {
-            return l->next(ray.start, ray.direction).has_value();
+        const bool held = std::any_of(same_key.begin(), same_key.end(), [&](std::size_t i) {
+            return lattices_[i]->next(ray.start, ray.direction).has_value();
         });
         if (!held) {
+            same_key.push_back(lattices_.size());
             lattices_.push_back(ray_lattice(lattice::make_lattice(scene, poll, r), poll));
             cells_ += lattices_.back()->cells();
         }
     }
     setup_seconds_ =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+LatticeStepper::LatticeKey LatticeStepper::key_of(const Vector& p, const Vector& v) const {
+    LatticeKey key;
+    key.reserve(2 * static_cast<std::size_t>(scene_.dim));
+    for (int j = 0; j < scene_.dim; ++j) {
+        key.push_back(abs(v[j]));
+        key.push_back(v[j] == 0 ? p[j] : Rational(0));
+    }
+    return key;
 }
 
 void LatticeStepper::describe(Answer& answer) const {
@@ -167,12 +179,13 @@ LatticeStepper::~LatticeStepper() = default;
 
 ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
     if (std::optional<ReferenceEvent> e = lattices_[last_]->next(p, v)) return std::move(*e);
-    for (std::size_t i = 0; i < lattices_.size(); ++i)
-        if (i != last_)
-            if (std::optional<ReferenceEvent> e = lattices_[i]->next(p, v)) {
-                last_ = i;
-                return std::move(*e);
-            }
+    if (const auto same_key = by_key_.find(key_of(p, v)); same_key != by_key_.end())
+        for (std::size_t i : same_key->second)
+            if (i != last_)
+                if (std::optional<ReferenceEvent> e = lattices_[i]->next(p, v)) {
+                    last_ = i;
+                    return std::move(*e);
+                }
     // Every branch stays on its ray's lattice (see the header), so a state
     // that no lattice holds did not come from the search.
     throw std::logic_error("LatticeStepper: a state off every ray's lattice");

@@ -18,6 +18,7 @@
 #include "lattice/setup_poll.hpp"
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -45,8 +46,20 @@ public:
     class RayLattice;
 
 private:
+    // What a state shares with every state of its ray's lattice: the
+    // direction's components up to sign, and the coordinates on the axes it
+    // does not move along (a lattice's other test, integrality after
+    // scaling, holds for every state a search reaches). Lattices are found
+    // by it, so a switch between rays costs a lookup, not a scan of every
+    // ray's lattice.
+    using LatticeKey = std::vector<Rational>;
+    LatticeKey key_of(const Vector& p, const Vector& v) const;
+
     const Scene& scene_;
     std::vector<std::unique_ptr<RayLattice>> lattices_;
+    // Indices in lattices_ by key; rays whose starts differ in denominators
+    // may share a key but not a scale, so a key may name several.
+    std::map<LatticeKey, std::vector<std::size_t>> by_key_;
     // The lattice that held the last state asked about: a stretch stays on
     // one, so it is tried first.
     mutable std::size_t last_ = 0;
