@@ -68,9 +68,7 @@ public:
     // One step along a stretch; s is not its last state. False when
     // keep_going said to stop.
     bool step(StretchState& s) {
-        ReferenceEvent e = stepper_.next(s.p, s.v);
-        s.p = std::move(e.point);
-        s.v = std::move(e.outgoing.front().direction);
+        s.follow(stepper_.next(s.p, s.v));
         return ++steps_ % 256 != 0 || keep_going_();
     }
 

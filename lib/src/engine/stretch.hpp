@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace orthoray::engine {
@@ -18,6 +19,11 @@ namespace orthoray::engine {
 struct StretchState {
     Vector p, v;
     bool operator==(const StretchState&) const = default;
+    // The state after event e, which continues the stretch: its one way out.
+    void follow(ReferenceEvent&& e) {
+        p = std::move(e.point);
+        v = std::move(e.outgoing.front().direction);
+    }
 };
 
 struct StretchEnd {
@@ -80,8 +86,7 @@ StretchEnd walk_stretch(const EventStepper& stepper, Vector p, Vector v, Visit&&
             return end;
         }
         if (e.outgoing.front().reflection) ++end.reflections;
-        s.p = std::move(e.point);
-        s.v = std::move(e.outgoing.front().direction);
+        s.follow(std::move(e));
     }
 }
 
