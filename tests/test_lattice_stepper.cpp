@@ -5,6 +5,7 @@
 // the stepper picks (coordinates shifted past 2^59 and 2^123).
 #include "engine/lattice_stepper.hpp"
 #include "orthoray/parse.hpp"
+#include "orthoray/solve.hpp"
 #include "support/case_count.hpp"
 #include "support/portable_random.hpp"
 #include "support/random_optics.hpp"
@@ -138,4 +139,25 @@ TEST_CASE("rays on one line of directions but different lattices are told apart"
     // A point of the finer lattice on neither ray's line is still refused
     // where the key matches neither lattice's scale.
     CHECK_THROWS_AS(fast.next(Vector{Rational(1, 5), 0, 0}, Vector{1, 1, 0}), std::logic_error);
+}
+
+TEST_CASE("a ray starting beyond another ray's numbers is stepped on its own lattice",
+          "[illumination]") {
+    // Both rays run along y = 0, so the first's lattice holds the second's
+    // start; but that start, 2^64 + 20, is beyond the 64-bit numbers the
+    // first lattice was built for (its scene reaches 30), and read there it
+    // would wrap to 20 and meet x = 10 instead of x = 30.
+    const Scene s = parse_scene("dim 2\nmirror x 10 y -5 5\nmirror x 30 y -5 5\n"
+                                "ray 20 0 1 0\nray 18446744073709551636 0 -1 0\n"
+                                "target -1000000 0\n",
+                                "s.scene", SceneFormat::text);
+    const engine::LatticeStepper fast(s);
+    const engine::ReferenceStepper plain(s);
+    for (const Ray& ray : s.rays)
+        require_same(fast.next(ray.start, ray.direction), plain.next(ray.start, ray.direction));
+    CHECK(fast.next(s.rays[1].start, s.rays[1].direction).point == Vector{30, 0, 0});
+    // The search counts ray 2's state leaving x = 30 along +x, which ray 1
+    // never has: five states in all, as the state graph says.
+    SolveOptions options;
+    CHECK(solve(s, options).states == 5);
 }

@@ -62,6 +62,11 @@ public:
         }
         lattice::Coords at;
         if (!ls_.to_lattice(p, at)) return std::nullopt;
+        // Int was chosen for the numbers of this ray's scene (its start and
+        // the elements): another ray's start on the same lattice may lie
+        // beyond them, and is that ray's lattice's to answer.
+        for (int i = 0; i < M; ++i)
+            if (mpz_cmpabs(at[i].get_mpz_t(), ls_.magnitude.get_mpz_t()) > 0) return std::nullopt;
         Int q[M];
         for (int i = 0; i < M; ++i) q[i] = lattice::from_integer<Int>(at[i]);
 
