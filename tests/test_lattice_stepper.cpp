@@ -8,11 +8,13 @@
 #include "orthoray/solve.hpp"
 #include "support/case_count.hpp"
 #include "support/portable_random.hpp"
+#include "support/random_octagonal.hpp"
 #include "support/random_optics.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
+#include <string>
 
 using namespace orthoray;
 
@@ -40,11 +42,53 @@ void require_same(const engine::ReferenceEvent& fast, const engine::ReferenceEve
     CHECK(fast.t == plain.t);
     CHECK(fast.point == plain.point);
     CHECK(fast.absorbed == plain.absorbed);
+    CHECK(fast.junction == plain.junction);
+    CHECK(fast.acting == plain.acting);
     REQUIRE(fast.outgoing.size() == plain.outgoing.size());
     for (std::size_t k = 0; k < plain.outgoing.size(); ++k) {
         CHECK(fast.outgoing[k].direction == plain.outgoing[k].direction);
         CHECK(fast.outgoing[k].reflection == plain.outgoing[k].reflection);
     }
+}
+
+struct Tally {
+    std::uint64_t events = 0, splits = 0, absorbed = 0, junctions = 0;
+};
+
+void walk_branches_once(std::mt19937_64& rng, const Scene& s, const engine::EventStepper& fast,
+                        const engine::EventStepper& plain, Tally& tally) {
+    struct Branch {
+        Vector p, v;
+        bool done = false;
+    };
+    std::vector<Branch> branches;
+    for (const Ray& ray : s.rays) branches.push_back({ray.start, ray.direction});
+    for (int step = 0; step < 40; ++step)
+        for (Branch& b : branches) {
+            if (b.done) continue;
+            const engine::ReferenceEvent e = plain.next(b.p, b.v);
+            require_same(fast.next(b.p, b.v), e);
+            ++tally.events;
+            tally.junctions += e.junction;
+            if (e.escape || e.absorbed) {
+                tally.absorbed += e.absorbed;
+                b.done = true;
+                continue;
+            }
+            tally.splits += e.outgoing.size() > 1;
+            b.p = e.point;
+            b.v = e.outgoing[test::pick_index(rng, 0, e.outgoing.size() - 1)].direction;
+        }
+}
+
+// Random branches of every ray, 40 events each at most (`rounds` times),
+// the rays taking turns so that the stepper switches lattices at every
+// step where the scene's rays lie on several: each event of the lattice
+// stepper must be the reference scan's.
+void walk_branches(std::mt19937_64& rng, const Scene& s, Tally& tally, int rounds = 1) {
+    const engine::LatticeStepper fast(s);
+    const engine::ReferenceStepper plain(s);
+    for (int round = 0; round < rounds; ++round) walk_branches_once(rng, s, fast, plain, tally);
 }
 
 } // namespace
@@ -57,7 +101,7 @@ TEST_CASE("the lattice stepper finds the reference scan's events on random branc
     shape.one_sided_percent = 30;
     const Integer shifts[] = {Integer(0), Integer(1) << 62, Integer(1) << 126};
     const int cases = test::case_count(1200);
-    std::uint64_t events = 0, splits = 0, absorbed = 0;
+    Tally tally;
     for (int i = 0; i < cases; ++i) {
         shape.scene.dim = i % 2 == 0 ? 3 : 2;
         // Up to 60 elements, so that the grids have many cells to walk.
@@ -66,37 +110,13 @@ TEST_CASE("the lattice stepper finds the reference scan's events on random branc
         shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
         const Scene s = shifted(test::random_optics_scene(rng, shape), shifts[i % 3]);
         INFO("case " << i << "\n" << write_scene(s));
-        const engine::LatticeStepper fast(s);
-        const engine::ReferenceStepper plain(s);
-        // The rays take turns, so the stepper switches lattices at every
-        // step where the scene's rays lie on several.
-        struct Branch {
-            Vector p, v;
-            bool done = false;
-        };
-        std::vector<Branch> branches;
-        for (const Ray& ray : s.rays) branches.push_back({ray.start, ray.direction});
-        for (int step = 0; step < 40; ++step)
-            for (Branch& b : branches) {
-                if (b.done) continue;
-                const engine::ReferenceEvent e = plain.next(b.p, b.v);
-                require_same(fast.next(b.p, b.v), e);
-                ++events;
-                if (e.escape || e.absorbed) {
-                    absorbed += e.absorbed;
-                    b.done = true;
-                    continue;
-                }
-                splits += e.outgoing.size() > 1;
-                b.p = e.point;
-                b.v = e.outgoing[test::pick_index(rng, 0, e.outgoing.size() - 1)].direction;
-            }
+        walk_branches(rng, s, tally);
     }
     // The branches met every kind of event.
     // (15,023 events, 2,275 splits and 373 absorptions at full size.)
-    CHECK(events > 10u * static_cast<unsigned>(cases));
-    CHECK(splits > events / 10);
-    CHECK(absorbed > static_cast<unsigned>(cases) / 5);
+    CHECK(tally.events > 10u * static_cast<unsigned>(cases));
+    CHECK(tally.splits > tally.events / 10);
+    CHECK(tally.absorbed > static_cast<unsigned>(cases) / 5);
 }
 
 TEST_CASE("a state off every ray's lattice is refused, not answered", "[illumination]") {
@@ -141,23 +161,76 @@ TEST_CASE("rays on one line of directions but different lattices are told apart"
     CHECK_THROWS_AS(fast.next(Vector{Rational(1, 5), 0, 0}, Vector{1, 1, 0}), std::logic_error);
 }
 
+TEST_CASE("with diagonals, rays of one direction class but different lattices are told apart",
+          "[illumination][octagonal]") {
+    // Every ray moves along (1, 2) up to signs and swaps, so all share a
+    // lookup key. The octagonal lattice of (1, 2) scales by N = 6: ray 1's
+    // start (0, 0) gives lines cross(w, q) = 0 mod 6; ray 2's, (1/3, 0),
+    // scales to the integer point (2, 0) but lies on cross = -4, off every
+    // line of ray 1's lattice, where a shot would divide inexactly. Ray 3
+    // has a denominator ray 1's scale does not hold.
+    const Scene s =
+        parse_scene("dim 2\nmirror / 0 -20 40 20\nmirror x 30 y -40 40\nmirror y 35 x -40 40\n"
+                    "splitter x -10 y -40 40\n"
+                    "ray 0 0 1 2\nray 1/3 0 1 2\nray 1/7 0 -2 1\ntarget 1000 1000\n",
+                    "s.scene", SceneFormat::text);
+    std::mt19937_64 rng(5);
+    Tally tally;
+    walk_branches(rng, s, tally, 20);
+    CHECK(tally.events > 200u);
+}
+
 TEST_CASE("a ray starting beyond another ray's numbers is stepped on its own lattice",
           "[illumination]") {
     // Both rays run along y = 0, so the first's lattice holds the second's
     // start; but that start, 2^64 + 20, is beyond the 64-bit numbers the
     // first lattice was built for (its scene reaches 30), and read there it
-    // would wrap to 20 and meet x = 10 instead of x = 30.
-    const Scene s = parse_scene("dim 2\nmirror x 10 y -5 5\nmirror x 30 y -5 5\n"
-                                "ray 20 0 1 0\nray 18446744073709551636 0 -1 0\n"
-                                "target -1000000 0\n",
-                                "s.scene", SceneFormat::text);
-    const engine::LatticeStepper fast(s);
-    const engine::ReferenceStepper plain(s);
-    for (const Ray& ray : s.rays)
-        require_same(fast.next(ray.start, ray.direction), plain.next(ray.start, ray.direction));
-    CHECK(fast.next(s.rays[1].start, s.rays[1].direction).point == Vector{30, 0, 0});
-    // The search counts ray 2's state leaving x = 30 along +x, which ray 1
-    // never has: five states in all, as the state graph says.
-    SolveOptions options;
-    CHECK(solve(s, options).states == 5);
+    // would wrap to 20 and meet x = 10 instead of x = 30. The same on the
+    // octagonal lattice, which a diagonal far away brings in.
+    const std::string scene = "dim 2\nmirror x 10 y -5 5\nmirror x 30 y -5 5\n"
+                              "ray 20 0 1 0\nray 18446744073709551636 0 -1 0\n"
+                              "target -1000000 0\n";
+    for (const std::string extra : {"", "mirror / 100 100 101 101\n"}) {
+        const Scene s = parse_scene(scene + extra, "s.scene", SceneFormat::text);
+        INFO(write_scene(s));
+        const engine::LatticeStepper fast(s);
+        const engine::ReferenceStepper plain(s);
+        for (const Ray& ray : s.rays)
+            require_same(fast.next(ray.start, ray.direction), plain.next(ray.start, ray.direction));
+        CHECK(fast.next(s.rays[1].start, s.rays[1].direction).point == Vector{30, 0, 0});
+        // The search counts ray 2's state leaving x = 30 along +x, which
+        // ray 1 never has: five states in all, as the state graph says.
+        SolveOptions options;
+        CHECK(solve(s, options).states == 5);
+    }
+}
+
+TEST_CASE("with diagonals, the lattice stepper finds the reference scan's events on random "
+          "branches",
+          "[illumination][octagonal][property]") {
+    std::mt19937_64 rng(30'112'026);
+    test::RandomOctagonalShape shape;
+    shape.splitter_percent = 35;
+    shape.one_sided_percent = 30;
+    shape.max_rays = 4;
+    shape.max_targets = 1;
+    // Shifted past 2^59 and 2^123 (the 64- and 128-bit limits divided by
+    // the octagonal lattice's factor of 8 and the direction's size).
+    const Integer shifts[] = {Integer(0), Integer(1) << 62, Integer(1) << 126};
+    const int cases = test::case_count(1500);
+    Tally tally;
+    for (int i = 0; i < cases; ++i) {
+        shape.box = i % 3 == 0 ? 12 : 4;
+        shape.max_elements = i % 3 == 0 ? 40 : 8;
+        const Scene s = shifted(test::random_octagonal_scene(rng, shape), shifts[i % 3]);
+        INFO("case " << i << "\n" << write_scene(s));
+        walk_branches(rng, s, tally);
+    }
+    // The branches met every kind of event, junctions too.
+    CHECK(tally.events > 10u * static_cast<unsigned>(cases));
+    CHECK(tally.splits > tally.events / 20);
+    CHECK(tally.junctions > tally.splits);
+    // (71,657 events, 9,570 splits, 10,319 junctions and 1,300 absorptions
+    // at full size.)
+    CHECK(tally.absorbed > static_cast<unsigned>(cases) / 10);
 }

@@ -11,15 +11,6 @@
 
 namespace orthoray::engine {
 
-class LatticeStepper::RayLattice {
-public:
-    virtual ~RayLattice() = default;
-    // The next event of (p, v), or nullopt when (p, v) is not a state of
-    // this lattice (another ray's branch).
-    virtual std::optional<ReferenceEvent> next(const Vector& p, const Vector& v) const = 0;
-    virtual std::size_t cells() const = 0;
-};
-
 namespace {
 
 using lattice::LatticeScene;
@@ -32,7 +23,7 @@ std::int64_t cells_per_element(int dim) {
 }
 
 template <class Int, int M>
-class RayLatticeOn final : public LatticeStepper::RayLattice {
+class RayLatticeOn final : public RayLattice {
 public:
     RayLatticeOn(LatticeScene ls, const lattice::SetupPoll& poll)
         : ls_(std::move(ls)), grid_(ls_, cells_per_element(M), poll) {
@@ -120,8 +111,7 @@ private:
 };
 
 template <class Int>
-std::unique_ptr<LatticeStepper::RayLattice> on_int(LatticeScene ls,
-                                                   const lattice::SetupPoll& poll) {
+std::unique_ptr<RayLattice> on_int(LatticeScene ls, const lattice::SetupPoll& poll) {
     switch (ls.dim) {
     case 1:
         return std::make_unique<RayLatticeOn<Int, 1>>(std::move(ls), poll);
@@ -132,19 +122,19 @@ std::unique_ptr<LatticeStepper::RayLattice> on_int(LatticeScene ls,
     }
 }
 
-// The narrowest integer type the lattice engine proves safe for these
-// coordinates (lattice/lattice_int.hpp).
-std::unique_ptr<LatticeStepper::RayLattice> ray_lattice(LatticeScene ls,
-                                                        const lattice::SetupPoll& poll) {
+} // namespace
+
+std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray,
+                                             const lattice::SetupPoll& poll) {
+    LatticeScene ls = lattice::make_lattice(scene, poll, ray);
     if (ls.magnitude < lattice::int64_limit()) return on_int<std::int64_t>(std::move(ls), poll);
     if (ls.magnitude < lattice::int128_limit())
         return on_int<lattice::int128_t>(std::move(ls), poll);
     return on_int<Integer>(std::move(ls), poll);
 }
 
-} // namespace
-
-LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll) : scene_(scene) {
+LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll)
+    : scene_(scene), octagonal_(scene.has_diagonal()) {
     const auto begin = std::chrono::steady_clock::now();
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
         const Ray& ray = scene.rays[r];
@@ -156,7 +146,8 @@ LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& pol
         });
         if (!held) {
             same_key.push_back(lattices_.size());
-            lattices_.push_back(ray_lattice(lattice::make_lattice(scene, poll, r), poll));
+            lattices_.push_back(octagonal_ ? octagonal_ray_lattice(scene, r, poll)
+                                           : axis_ray_lattice(scene, r, poll));
             cells_ += lattices_.back()->cells();
         }
     }
@@ -166,6 +157,11 @@ LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& pol
 
 LatticeStepper::LatticeKey LatticeStepper::key_of(const Vector& p, const Vector& v) const {
     LatticeKey key;
+    if (octagonal_) {
+        key = {abs(v[0]), abs(v[1])};
+        if (key[1] < key[0]) std::swap(key[0], key[1]);
+        return key;
+    }
     key.reserve(2 * static_cast<std::size_t>(scene_.dim));
     for (int j = 0; j < scene_.dim; ++j) {
         key.push_back(abs(v[j]));
@@ -175,7 +171,7 @@ LatticeStepper::LatticeKey LatticeStepper::key_of(const Vector& p, const Vector&
 }
 
 void LatticeStepper::describe(Answer& answer) const {
-    answer.shooter = ShooterUsed::grid;
+    answer.shooter = octagonal_ ? ShooterUsed::bvh : ShooterUsed::grid;
     answer.stats.setup.seconds = setup_seconds_;
     answer.stats.setup.cells = cells_;
 }

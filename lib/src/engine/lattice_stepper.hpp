@@ -1,20 +1,24 @@
 // The illumination search's fast stepper: the next event found on the ray's
-// integer lattice by the lattice engine's uniform grid, instead of by the
-// reference scan of every element (docs/optics.md, "Stepping").
+// integer lattice by a shooter built on it, instead of by the reference
+// scan of every element (docs/optics.md, "Stepping").
 //
 // Why every state of a search has a lattice: among axis-parallel elements an
 // event negates components of the direction (a mirror, or a splitter's
 // reflected beam) or keeps it (a splitter's transmitted beam), so every
 // branch of ray r moves along r's direction with some components negated and
 // meets elements at points of r's lattice (lattice/lattice_scene.hpp, Reif,
-// Tygar and Yoshida 1994). The grid finds the first acting element in O(1)
-// expected cells; the elements acting at that point come from one cell, and
-// the acting rule (event_rule.hpp) turns them into the outgoing directions,
-// as in every other engine. Diagonals turn directions off the lattice, so
-// scenes with them keep the reference scan.
+// Tygar and Yoshida 1994); the lattice engine's uniform grid finds the first
+// acting element in O(1) expected cells. Diagonals (2D only) also swap the
+// direction's components, and every event point is then a point of r's
+// octagonal lattice (lattice/octagonal_lattice.hpp, docs/octagonal.md),
+// where the octagonal engine's bounding volume hierarchy finds it in
+// O(log n) expected boxes. Either way the elements acting at the point come
+// from the shooter too, and the acting rule (event_rule.hpp) turns them
+// into the outgoing directions, as in every other engine.
 #pragma once
 
 #include "engine/event_stepper.hpp"
+#include "engine/ray_lattice.hpp"
 #include "lattice/setup_poll.hpp"
 
 #include <cstddef>
@@ -26,12 +30,14 @@ namespace orthoray::engine {
 
 class LatticeStepper final : public EventStepper {
 public:
-    // Whether the scene suits this stepper: no diagonal elements.
-    static bool applies(const Scene& scene) { return !scene.has_diagonal(); }
+    // Whether the scene suits this stepper: diagonal elements only in 2D,
+    // as scenes have them.
+    static bool applies(const Scene& scene) { return scene.dim == 2 || !scene.has_diagonal(); }
 
-    // Builds one lattice and grid for every ray whose states no earlier
-    // ray's lattice holds: O(n) time and memory each, calling `poll` once
-    // an element (it may throw lattice::SetupStopped).
+    // Builds one lattice and shooter for every ray whose states no earlier
+    // ray's lattice holds: O(n) memory and O(n) (grid) or O(n log n)
+    // (hierarchy) time each, calling `poll` once an element (it may throw
+    // lattice::SetupStopped).
     explicit LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll = {});
     ~LatticeStepper() override;
 
@@ -42,20 +48,20 @@ public:
     }
     void describe(Answer& answer) const override;
 
-    // One ray's lattice with its grid; defined in the .cpp file.
-    class RayLattice;
-
 private:
     // What a state shares with every state of its ray's lattice: the
     // direction's components up to sign, and the coordinates on the axes it
-    // does not move along (a lattice's other test, integrality after
-    // scaling, holds for every state a search reaches). Lattices are found
-    // by it, so a switch between rays costs a lookup, not a scan of every
-    // ray's lattice.
+    // does not move along; with diagonals, which swap components, the two
+    // components' sizes in either order. (A lattice's other tests, that the
+    // scaled point is integral and, with diagonals, on one of the ray's
+    // lines, hold for every state a search reaches.) Lattices are found by
+    // it, so a switch between rays costs a lookup, not a scan of every ray's
+    // lattice.
     using LatticeKey = std::vector<Rational>;
     LatticeKey key_of(const Vector& p, const Vector& v) const;
 
     const Scene& scene_;
+    const bool octagonal_; // the scene has diagonals: octagonal lattices
     std::vector<std::unique_ptr<RayLattice>> lattices_;
     // Indices in lattices_ by key; rays whose starts differ in denominators
     // may share a key but not a scale, so a key may name several.
@@ -63,11 +69,12 @@ private:
     // The lattice that held the last state asked about: a stretch stays on
     // one, so it is tried first.
     mutable std::size_t last_ = 0;
-    double setup_seconds_ = 0; // building every lattice and grid
-    std::size_t cells_ = 0;    // the grids' cells together
+    double setup_seconds_ = 0; // building every lattice and shooter
+    std::size_t cells_ = 0;    // the grids' cells together (a hierarchy has none)
 };
 
-// The lattice stepper where it applies, else the reference scan.
+// The lattice stepper where it applies (every scene the reader accepts),
+// else the reference scan.
 std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene,
                                               const lattice::SetupPoll& poll = {});
 

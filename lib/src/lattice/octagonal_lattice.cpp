@@ -92,11 +92,13 @@ void fill_outcomes(OctagonalLattice& out) {
 
 } // namespace
 
-OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll) {
+OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll,
+                                        std::size_t ray_index) {
     if (scene.dim != 2) throw std::invalid_argument("diagonal elements are 2D only");
     OctagonalLattice out;
     out.scene = &scene;
-    const Vector& v = scene.ray().direction;
+    out.ray = &scene.rays.at(ray_index);
+    const Vector& v = out.ray->direction;
 
     // The primitive integer direction u = (a, b).
     const Integer vden = lcm(v[0].get_den(), v[1].get_den());
@@ -123,7 +125,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
         for (int j = 0; j < 2; ++j)
             if (!is_integer(x[j])) D = lcm(D, x[j].get_den());
     };
-    take(scene.ray().start);
+    take(out.ray->start);
     take(scene.target());
     for (const Element& e : scene.elements) {
         poll();
@@ -141,7 +143,7 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
         return r;
     };
     for (int j = 0; j < 2; ++j) {
-        out.start[j] = scaled(scene.ray().start[j]);
+        out.start[j] = scaled(out.ray->start[j]);
         out.target[j] = scaled(scene.target()[j]);
     }
     // The eight directions, built once: each element is asked about every
@@ -193,7 +195,7 @@ Vector OctagonalLattice::point(const Coords& p) const {
 }
 
 Vector OctagonalLattice::direction(unsigned d) const {
-    const Vector& v = scene->ray().direction;
+    const Vector& v = ray->direction;
     const std::array<Rational, 2> r = oriented(v[0], v[1], d);
     return {r[0], r[1], Rational(0)};
 }

@@ -29,6 +29,7 @@
 #include "orthoray/scene.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -65,6 +66,7 @@ struct OctagonalLattice {
     // the shooter and the stepper is at most 8 times this.
     Integer magnitude;
     const Scene* scene = nullptr;
+    const Ray* ray = nullptr; // the ray whose lattice this is
 
     // The direction leaving an event on direction d, where the mirrors
     // meeting it have the orientations in `mirrors` (bit o) and the
@@ -80,8 +82,11 @@ struct OctagonalLattice {
     Vector direction(unsigned d) const;
 };
 
-// Throws std::invalid_argument unless the scene is 2D.
-// `poll` is called once an element (SetupPoll: it may throw SetupStopped).
-OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll = {});
+// The lattice of ray number `ray_index` (from 0) of the scene; its `target`
+// is the first target's. Throws std::invalid_argument unless the scene is
+// 2D. `poll` is called once an element (SetupPoll: it may throw
+// SetupStopped).
+OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll = {},
+                                        std::size_t ray_index = 0);
 
 } // namespace orthoray::lattice

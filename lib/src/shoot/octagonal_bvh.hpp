@@ -64,6 +64,15 @@ public:
     // From the lattice point p along direction d (an index of the lattice).
     OctagonalShot<Int> shoot(const Int (&p)[2], unsigned d) const;
 
+    // Calls f(k, acting) for every element k (its index in the lattice's
+    // elements) that the lattice point q lies on, with its acting bits
+    // (OctagonalElement::acting): the boxes holding q are walked down, and
+    // an element holds q when q is in its box and on its line. O(log n)
+    // plus the boxes holding q, so the elements at an event come without a
+    // scan of all of them.
+    template <class F>
+    void for_each_at(const Int (&q)[2], F&& f) const;
+
     static constexpr std::uint32_t leaf_size = 2;
 
 private:
@@ -72,6 +81,7 @@ private:
         Int offset; // k of its line
         std::uint8_t orientation, acting;
         bool absorber;
+        std::uint32_t source; // index in the lattice's elements (fits the padding)
     };
     struct Node {
         Int lo[2], hi[2];
@@ -154,6 +164,7 @@ OctagonalBvh<Int>::OctagonalBvh(const lattice::OctagonalLattice& lattice,
     for (const lattice::OctagonalElement& e : lattice.elements) {
         poll();
         Item it;
+        it.source = static_cast<std::uint32_t>(items.size());
         for (int j = 0; j < 2; ++j) {
             it.lo[j] = lattice::from_integer<Int>(e.lo[j]);
             it.hi[j] = lattice::from_integer<Int>(e.hi[j]);
@@ -283,6 +294,33 @@ OctagonalShot<Int> OctagonalBvh<Int>::shoot_way(const Int (&p)[2], unsigned d) c
             if (!(bound < stack_enter[top])) break;
         }
         current = stack[top];
+    }
+}
+
+template <class Int>
+template <class F>
+void OctagonalBvh<Int>::for_each_at(const Int (&q)[2], F&& f) const {
+    if (nodes_.empty()) return;
+    const auto holds = [&](const Int(&lo)[2], const Int(&hi)[2]) {
+        return !(q[0] < lo[0] || hi[0] < q[0] || q[1] < lo[1] || hi[1] < q[1]);
+    };
+    const Int form[4] = {q[0], q[1], Int(q[0] - q[1]), Int(q[0] + q[1])};
+    constexpr int stack_size = 64; // as in shoot_way
+    std::uint32_t stack[stack_size];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        if (!holds(node.lo, node.hi)) continue;
+        if (node.count == 0) {
+            stack[top++] = node.first;                                            // right child
+            stack[top++] = static_cast<std::uint32_t>(&node - nodes_.data()) + 1; // left
+            continue;
+        }
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+            const Item& it = items_[k];
+            if (holds(it.lo, it.hi) && form[it.orientation] == it.offset) f(it.source, it.acting);
+        }
     }
 }
 
