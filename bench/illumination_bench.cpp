@@ -3,10 +3,13 @@
 // random splitter scenes in 2D and 3D: bench/scenes.hpp's random mirror
 // boxes with every third inner mirror a splitter, and a target no branch
 // reaches (the parity argument of random_box holds for every branch), so no
-// search stops early and each runs to its cap.
+// search stops early and each runs to its cap; then the same 2D boxes with
+// every fourth inner mirror on a diagonal, the target outside the box.
 //
 // - lattice: solve()'s search, stepping on the rays' lattices with the
-//   uniform grid (engine/lattice_stepper.hpp), capped at --events events;
+//   uniform grid (engine/lattice_stepper.hpp), or on 2D scenes with
+//   diagonals on their octagonal lattices with the hierarchy, capped at
+//   --events events;
 //   reports events and branch states expanded per second, the branch states
 //   stored, the bytes it accounts for them (Answer::stats.illumination.
 //   state_bytes) and the peak heap growth seen by this program's allocation
@@ -34,6 +37,7 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -44,6 +48,7 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 namespace {
 
@@ -116,6 +121,36 @@ Scene splitter_box(int dim, std::int64_t n) {
         random_box(dim, n, 12 + static_cast<std::uint64_t>(n) + static_cast<std::uint64_t>(dim));
     for (std::size_t i = static_cast<std::size_t>(2 * dim); i < s.elements.size(); i += 3)
         s.elements[i].kind = ElementKind::splitter;
+    return s;
+}
+
+// splitter_box in 2D with every fourth inner element laid on a diagonal
+// from its low end, rising and falling by turns, as long as the mirror where
+// the box leaves room (docs/octagonal.md): the lattice stepper then steps
+// on octagonal lattices with its hierarchy. The parity argument that keeps
+// splitter_box's target dark fails across diagonals, but the box is closed:
+// the target moves outside it.
+Scene diagonal_splitter_box(std::int64_t n) {
+    const Scene axis = splitter_box(2, n);
+    Scene s = axis;
+    s.elements.clear();
+    const Rational side(box_side);
+    for (std::size_t i = 0; i < axis.elements.size(); ++i) {
+        const Element& e = axis.elements[i];
+        const bool rising = i % 8 == 1, falling = i % 8 == 5;
+        // The walls (the first four) stay.
+        Rational length = e.hi[0] - e.lo[0] + e.hi[1] - e.lo[1];
+        const Rational room_x = side - 1 - e.lo[0];
+        const Rational room_y = rising ? Rational(side - 1 - e.lo[1]) : Rational(e.lo[1] - 1);
+        length = std::min({length, room_x, room_y});
+        if (i < 4 || !(rising || falling) || length <= 0) {
+            s.elements.push_back(e);
+            continue;
+        }
+        s.add_diagonal(e.kind, e.lo[0], e.lo[1], e.lo[0] + length,
+                       rising ? Rational(e.lo[1] + length) : Rational(e.lo[1] - length));
+    }
+    s.targets = {Vector{-1, -1, 0}};
     return s;
 }
 
@@ -229,14 +264,17 @@ int run(int argc, char** argv) {
     Table table({"scene", "elements", "lattice: events", "lattice: events/s",
                  "lattice: branch states/s", "scan: events/s", "naive: events/s", "lattice / scan",
                  "states stored", "bytes/state (accounted)", "bytes/state (heap peak)",
-                 "naive: bytes/state (heap peak)", "grids: bytes/element", "grids: build s"});
+                 "naive: bytes/state (heap peak)", "shooters: bytes/element", "shooters: build s"});
     Csv csv(csv_path);
-    csv.row({"dim", "elements", "lattice_events", "lattice_expanded", "lattice_seconds",
-             "scan_events", "scan_seconds", "naive_seconds", "states", "accounted_bytes",
-             "heap_peak", "naive_states", "naive_heap_peak", "grid_bytes", "grid_seconds"});
-    for (int dim : {2, 3})
+    csv.row({"dim", "diagonals", "elements", "lattice_events", "lattice_expanded",
+             "lattice_seconds", "scan_events", "scan_seconds", "naive_seconds", "states",
+             "accounted_bytes", "heap_peak", "naive_states", "naive_heap_peak", "grid_bytes",
+             "grid_seconds"});
+    // 2D and 3D axis-parallel scenes (the uniform grid), then 2D scenes
+    // with diagonals (the octagonal lattices' hierarchy).
+    for (const auto& [dim, diagonals] : {std::pair{2, false}, {3, false}, {2, true}})
         for (std::int64_t n = 100; n <= max_n; n *= 10) {
-            const Scene scene = splitter_box(dim, n);
+            const Scene scene = diagonals ? diagonal_splitter_box(n) : splitter_box(dim, n);
             const auto fast_events = static_cast<std::uint64_t>(events);
             const auto scan_events = std::max<std::uint64_t>(
                 1, static_cast<std::uint64_t>(work / static_cast<double>(n)));
@@ -273,7 +311,8 @@ int run(int argc, char** argv) {
             const double stored = static_cast<double>(answer.states.get_ui());
             const std::uint64_t expanded = answer.stats.illumination.expanded;
             const double elements = static_cast<double>(scene.elements.size());
-            const std::string name = "random " + std::to_string(dim) + "D n=" + std::to_string(n);
+            const std::string name = "random " + std::to_string(dim) + "D" +
+                                     (diagonals ? " diagonals" : "") + " n=" + std::to_string(n);
             table.add({name, std::to_string(scene.elements.size()), std::to_string(fast_events),
                        si(fast_rate), si(static_cast<double>(expanded) / tf), si(scan_rate),
                        si(static_cast<double>(scan_events) / tb), fixed(fast_rate / scan_rate),
@@ -282,10 +321,10 @@ int run(int argc, char** argv) {
                        fixed(static_cast<double>(peak) / stored),
                        fixed(static_cast<double>(naive_peak) / static_cast<double>(naive_states)),
                        fixed(static_cast<double>(grid_bytes) / elements), fixed(grid_seconds, 3)});
-            csv.row({std::to_string(dim), std::to_string(scene.elements.size()),
-                     std::to_string(fast_events), std::to_string(expanded), fixed(tf, 6),
-                     std::to_string(scan_events), fixed(ts, 6), fixed(tb, 6),
-                     std::to_string(answer.states.get_ui()),
+            csv.row({std::to_string(dim), diagonals ? "1" : "0",
+                     std::to_string(scene.elements.size()), std::to_string(fast_events),
+                     std::to_string(expanded), fixed(tf, 6), std::to_string(scan_events),
+                     fixed(ts, 6), fixed(tb, 6), std::to_string(answer.states.get_ui()),
                      std::to_string(answer.stats.illumination.state_bytes), std::to_string(peak),
                      std::to_string(naive_states), std::to_string(naive_peak),
                      std::to_string(grid_bytes), fixed(grid_seconds, 6)});
