@@ -3,6 +3,7 @@
 // and whether it reflects) along random branches of random scenes with
 // splitters, one-sided elements and several rays, on every integer type
 // the stepper picks (coordinates shifted past 2^59 and 2^123).
+#include "engine/illumination.hpp"
 #include "engine/lattice_stepper.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/solve.hpp"
@@ -53,6 +54,7 @@ void require_same(const engine::ReferenceEvent& fast, const engine::ReferenceEve
 
 struct Tally {
     std::uint64_t events = 0, splits = 0, absorbed = 0, junctions = 0;
+    std::uint64_t partly_scanned = 0; // scenes whose stepper scanned some ray's branches
 };
 
 void walk_branches_once(std::mt19937_64& rng, const Scene& s, const engine::EventStepper& fast,
@@ -85,9 +87,14 @@ void walk_branches_once(std::mt19937_64& rng, const Scene& s, const engine::Even
 // the rays taking turns so that the stepper switches lattices at every
 // step where the scene's rays lie on several: each event of the lattice
 // stepper must be the reference scan's.
-void walk_branches(std::mt19937_64& rng, const Scene& s, Tally& tally, int rounds = 1) {
-    const engine::LatticeStepper fast(s);
+// `max_bytes`: the lattice stepper's cap on its lattices after the first;
+// 0 leaves every other ray's branches to the reference scan. Tallies the
+// scenes where that happened.
+void walk_branches(std::mt19937_64& rng, const Scene& s, Tally& tally, int rounds = 1,
+                   std::size_t max_bytes = engine::LatticeStepper::default_max_bytes) {
+    const engine::LatticeStepper fast(s, {}, max_bytes);
     const engine::ReferenceStepper plain(s);
+    tally.partly_scanned += fast.scans();
     for (int round = 0; round < rounds; ++round) walk_branches_once(rng, s, fast, plain, tally);
 }
 
@@ -110,13 +117,16 @@ TEST_CASE("the lattice stepper finds the reference scan's events on random branc
         shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
         const Scene s = shifted(test::random_optics_scene(rng, shape), shifts[i % 3]);
         INFO("case " << i << "\n" << write_scene(s));
-        walk_branches(rng, s, tally);
+        // Every fourth case builds one lattice only: the other rays'
+        // branches are scanned, in turns with the first's.
+        walk_branches(rng, s, tally, 1, i % 4 == 3 ? 0 : engine::LatticeStepper::default_max_bytes);
     }
     // The branches met every kind of event.
     // (15,023 events, 2,275 splits and 373 absorptions at full size.)
     CHECK(tally.events > 10u * static_cast<unsigned>(cases));
     CHECK(tally.splits > tally.events / 10);
     CHECK(tally.absorbed > static_cast<unsigned>(cases) / 5);
+    CHECK(tally.partly_scanned > static_cast<unsigned>(cases) / 20);
 }
 
 TEST_CASE("a state off every ray's lattice is refused, not answered", "[illumination]") {
@@ -224,7 +234,9 @@ TEST_CASE("with diagonals, the lattice stepper finds the reference scan's events
         shape.max_elements = i % 3 == 0 ? 40 : 8;
         const Scene s = shifted(test::random_octagonal_scene(rng, shape), shifts[i % 3]);
         INFO("case " << i << "\n" << write_scene(s));
-        walk_branches(rng, s, tally);
+        // Every fourth case builds one lattice only: the other rays'
+        // branches are scanned, in turns with the first's.
+        walk_branches(rng, s, tally, 1, i % 4 == 3 ? 0 : engine::LatticeStepper::default_max_bytes);
     }
     // The branches met every kind of event, junctions too.
     CHECK(tally.events > 10u * static_cast<unsigned>(cases));
@@ -233,4 +245,35 @@ TEST_CASE("with diagonals, the lattice stepper finds the reference scan's events
     // (71,657 events, 9,570 splits, 10,319 junctions and 1,300 absorptions
     // at full size.)
     CHECK(tally.absorbed > static_cast<unsigned>(cases) / 10);
+    CHECK(tally.partly_scanned > static_cast<unsigned>(cases) / 20);
+}
+
+TEST_CASE("past the lattices' byte cap, rays are scanned and the answers stay", "[illumination]") {
+    // Four rays on four lines: four lattices, or one and three rays left
+    // to the reference scan when the others may take no bytes.
+    const Scene s = parse_scene("dim 2\nmirror x 0 y 0 10\nmirror x 10 y 0 10\n"
+                                "splitter y 5 x 2 8\nmirror y 0 x 0 10\nmirror y 10 x 0 10\n"
+                                "ray 1 1 1 0\nray 1 2 1 0\nray 1 3 1 0\nray 1 4 0 1\n"
+                                "target 20 20\ntarget 1 9\n",
+                                "s.scene", SceneFormat::text);
+    const engine::LatticeStepper all(s);
+    CHECK(all.lattice_count() == 4);
+    CHECK_FALSE(all.scans());
+    const engine::LatticeStepper one(s, {}, 0);
+    CHECK(one.lattice_count() == 1);
+    CHECK(one.scans());
+    std::mt19937_64 rng(7);
+    Tally tally;
+    walk_branches(rng, s, tally, 10, 0);
+    CHECK(tally.events > 100u);
+    // The search through either stepper gives the same answer and count.
+    SolveOptions options;
+    const Answer full = engine::solve_illumination(s, options, all);
+    const Answer capped = engine::solve_illumination(s, options, one);
+    CHECK(full.reason == Reason::unlit);
+    CHECK(capped.reason == full.reason);
+    CHECK(capped.states == full.states);
+    REQUIRE(capped.targets.size() == 2);
+    CHECK(capped.targets[1].status == full.targets[1].status);
+    CHECK(capped.targets[1].reflections == full.targets[1].reflections);
 }

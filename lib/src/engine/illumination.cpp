@@ -83,7 +83,8 @@ public:
             // here, where running out of memory is a memory limit like any
             // other and a stop request is polled for once an element.
             if (!stepper_) {
-                owned_ = fastest_stepper(scene_, lattice::SetupPoll(options_.monitor, 0));
+                owned_ = fastest_stepper(scene_, lattice::SetupPoll(options_.monitor, 0),
+                                         options_.max_state_bytes);
                 stepper_ = owned_.get();
             }
             explored_.emplace(*stepper_, budget_);

@@ -360,7 +360,8 @@ Answer solve_intensity(const Scene& scene, const SolveOptions& options) {
     try {
         stepper = options.engine == Engine::reference
                       ? std::make_unique<ReferenceStepper>(scene)
-                      : fastest_stepper(scene, lattice::SetupPoll(options.monitor, 0));
+                      : fastest_stepper(scene, lattice::SetupPoll(options.monitor, 0),
+                                        options.max_state_bytes);
     } catch (const std::bad_alloc&) {
         return stopped(Limit::memory);
     } catch (const lattice::SetupStopped& stop) {

@@ -122,6 +122,15 @@ std::unique_ptr<RayLattice> on_int(LatticeScene ls, const lattice::SetupPoll& po
     }
 }
 
+// About what one more ray's lattice and shooter keep: the growth of the
+// resident set per lattice and element, measured with 50 to 100 rays on
+// distinct lattices among 10^4 random elements (bench/RESULTS.md: 111 bytes
+// in 2D, 350 in 3D, 100 with diagonals), rounded up.
+std::size_t ray_lattice_bytes(const Scene& scene) {
+    const std::size_t per_element = scene.dim == 3 ? 400 : 120;
+    return 4096 + per_element * scene.elements.size();
+}
+
 } // namespace
 
 std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray,
@@ -133,9 +142,12 @@ std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray
     return on_int<Integer>(std::move(ls), poll);
 }
 
-LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll)
+LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll,
+                               std::size_t max_bytes)
     : scene_(scene), octagonal_(scene.has_diagonal()) {
     const auto begin = std::chrono::steady_clock::now();
+    const std::size_t bytes_each = ray_lattice_bytes(scene);
+    std::size_t room = max_bytes;
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
         const Ray& ray = scene.rays[r];
         std::vector<std::size_t>& same_key = by_key_[key_of(ray.start, ray.direction)];
@@ -144,12 +156,18 @@ LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& pol
         const bool held = std::any_of(same_key.begin(), same_key.end(), [&](std::size_t i) {
             return lattices_[i]->next(ray.start, ray.direction).has_value();
         });
-        if (!held) {
-            same_key.push_back(lattices_.size());
-            lattices_.push_back(octagonal_ ? octagonal_ray_lattice(scene, r, poll)
-                                           : axis_ray_lattice(scene, r, poll));
-            cells_ += lattices_.back()->cells();
+        if (held) continue;
+        if (!lattices_.empty()) {
+            if (bytes_each > room) {
+                scans_ = true;
+                continue;
+            }
+            room -= bytes_each;
         }
+        same_key.push_back(lattices_.size());
+        lattices_.push_back(octagonal_ ? octagonal_ray_lattice(scene, r, poll)
+                                       : axis_ray_lattice(scene, r, poll));
+        cells_ += lattices_.back()->cells();
     }
     setup_seconds_ =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -187,14 +205,22 @@ ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
                     last_ = i;
                     return std::move(*e);
                 }
+    // A ray whose lattice was left unbuilt: its branches are scanned.
+    if (scans_) {
+        ReferenceEvent event = reference_step(scene_, p, v);
+        mark_reference_junction(scene_, v, event);
+        return event;
+    }
     // Every branch stays on its ray's lattice (see the header), so a state
     // that no lattice holds did not come from the search.
     throw std::logic_error("LatticeStepper: a state off every ray's lattice");
 }
 
-std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene, const lattice::SetupPoll& poll) {
-    if (LatticeStepper::applies(scene)) return std::make_unique<LatticeStepper>(scene, poll);
-    return std::make_unique<ReferenceStepper>(scene);
+std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene, const lattice::SetupPoll& poll,
+                                              std::optional<std::size_t> max_state_bytes) {
+    if (!LatticeStepper::applies(scene)) return std::make_unique<ReferenceStepper>(scene);
+    return std::make_unique<LatticeStepper>(
+        scene, poll, max_state_bytes ? *max_state_bytes / 3 : LatticeStepper::default_max_bytes);
 }
 
 } // namespace orthoray::engine

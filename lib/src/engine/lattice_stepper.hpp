@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace orthoray::engine {
@@ -34,11 +35,21 @@ public:
     // as scenes have them.
     static bool applies(const Scene& scene) { return scene.dim == 2 || !scene.has_diagonal(); }
 
+    // What the lattices after the first may take together by default: each
+    // is O(n), so a scene with many rays on distinct lattices would
+    // otherwise take O(rays n) memory before its first event.
+    static constexpr std::size_t default_max_bytes = std::size_t{4} << 30;
+
     // Builds one lattice and shooter for every ray whose states no earlier
     // ray's lattice holds: O(n) memory and O(n) (grid) or O(n log n)
     // (hierarchy) time each, calling `poll` once an element (it may throw
-    // lattice::SetupStopped).
-    explicit LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll = {});
+    // lattice::SetupStopped). The first is always built; the others only
+    // while their bytes, estimated from the element count, stay within
+    // `max_bytes`. States on no lattice built, the branches of the rays
+    // left over, are stepped by the reference scan: exact as well, O(n) an
+    // event.
+    explicit LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll = {},
+                            std::size_t max_bytes = default_max_bytes);
     ~LatticeStepper() override;
 
     ReferenceEvent next(const Vector& p, const Vector& v) const override;
@@ -47,6 +58,10 @@ public:
         return reference_passes(scene_, x, p, v, event);
     }
     void describe(Answer& answer) const override;
+
+    // Lattices built, and whether some ray was left to the reference scan.
+    std::size_t lattice_count() const { return lattices_.size(); }
+    bool scans() const { return scans_; }
 
 private:
     // What a state shares with every state of its ray's lattice: the
@@ -69,13 +84,18 @@ private:
     // The lattice that held the last state asked about: a stretch stays on
     // one, so it is tried first.
     mutable std::size_t last_ = 0;
+    bool scans_ = false;       // a ray's lattice was left unbuilt: scan its states
     double setup_seconds_ = 0; // building every lattice and shooter
     std::size_t cells_ = 0;    // the grids' cells together (a hierarchy has none)
 };
 
 // The lattice stepper where it applies (every scene the reader accepts),
-// else the reference scan.
+// else the reference scan. `max_state_bytes`: the search's own cap on its
+// branch states (SolveOptions::max_state_bytes, three quarters of
+// `--max-memory`), whose third, the rest of that memory, then caps the
+// lattices after the first instead of LatticeStepper::default_max_bytes.
 std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene,
-                                              const lattice::SetupPoll& poll = {});
+                                              const lattice::SetupPoll& poll = {},
+                                              std::optional<std::size_t> max_state_bytes = {});
 
 } // namespace orthoray::engine
