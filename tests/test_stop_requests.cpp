@@ -219,6 +219,31 @@ TEST_CASE("the illumination search polls while it builds its lattices on huge nu
     for (const TargetAnswer& t : stopped.targets) CHECK(t.status == TargetAnswer::Status::unknown);
 }
 
+TEST_CASE("a stop while the lattices are built still reports a target at a ray's start",
+          "[stop_requests]") {
+    // Target 2 is the ray's start: lit with 0 reflections before any event,
+    // as under --max-steps 0, whatever stops the setup.
+    BigBox box = big_box_scene(100'000);
+    box.scene.targets.push_back(box.scene.ray().start);
+    box.scene.ray().intensity = Integer(7);
+    for (const bool intensity : {false, true}) {
+        INFO((intensity ? "the intensity search" : "the illumination search"));
+        SolveOptions options;
+        if (intensity) options.min_intensity = Integer(1);
+        StopAtPoll first(1);
+        options.monitor = &first;
+        const Answer stopped = solve(box.scene, options);
+        CHECK(first.polls >= 1);
+        CHECK(stopped.reason == Reason::limit);
+        CHECK(stopped.limit == Limit::interrupt);
+        REQUIRE(stopped.targets.size() == 2);
+        CHECK(stopped.targets[0].status == TargetAnswer::Status::unknown);
+        CHECK(stopped.targets[1].status == TargetAnswer::Status::lit);
+        CHECK(stopped.targets[1].reflections == 0);
+        CHECK(stopped.targets[1].ray == 1u);
+    }
+}
+
 TEST_CASE("the octagonal engine polls while it scales and builds its hierarchy",
           "[stop_requests][octagonal]") {
     // A box with 10^100000-digit sides and one diagonal mirror: scaling

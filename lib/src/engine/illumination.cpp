@@ -78,22 +78,28 @@ public:
           states_(scene, budget_), best_(scene.targets.size()) {}
 
     Answer run() {
-        try {
-            // The lattices' grids take O(n) memory and time each: built
+        if (!stepper_) {
+            // The lattices' shooters take O(n) memory and time each: built
             // here, where running out of memory is a memory limit like any
             // other and a stop request is polled for once an element.
-            if (!stepper_) {
+            std::optional<Limit> stopped;
+            try {
                 owned_ = fastest_stepper(scene_, lattice::SetupPoll(options_.monitor, 0),
                                          options_.max_state_bytes);
-                stepper_ = owned_.get();
+            } catch (const std::bad_alloc&) {
+                stopped = Limit::memory;
+            } catch (const lattice::SetupStopped& stop) {
+                stopped = stop.limit;
             }
+            if (stopped) return stopped_in_setup(*stopped);
+            stepper_ = owned_.get();
+        }
+        try {
             explored_.emplace(*stepper_, budget_);
             search();
             if (!limit_) count_explored();
         } catch (const std::bad_alloc&) {
             limit_ = Limit::memory;
-        } catch (const lattice::SetupStopped& stopped) {
-            limit_ = stopped.limit;
         }
         Answer answer = conclude();
         if (options_.illumination_observer) report(answer, *options_.illumination_observer);
@@ -102,6 +108,20 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
+
+    // A limit met while the shooters were built: nothing was stepped, but a
+    // target at a ray's start is lit all the same, with 0 reflections, as
+    // under `--max-steps 0`. The reference scan needs no setup, so the
+    // search with it and no step allowed reports those, and the limit is
+    // the one met.
+    Answer stopped_in_setup(Limit limit) const {
+        const ReferenceStepper scan(scene_);
+        SolveOptions no_steps = options_;
+        no_steps.max_steps = 0;
+        Answer answer = IlluminationSearch(scene_, no_steps, &scan).run();
+        answer.limit = limit;
+        return answer;
+    }
 
     void search() {
         for (std::size_t r = 0; r < scene_.rays.size(); ++r) {

@@ -346,15 +346,19 @@ Answer solve_intensity(const Scene& scene, const SolveOptions& options,
 
 Answer solve_intensity(const Scene& scene, const SolveOptions& options) {
     check(scene, options);
-    // The lattices' grids take O(n) memory and time each: running out of
+    // The lattices' shooters take O(n) memory and time each: running out of
     // memory while building them is a memory limit like any other, and a
-    // stop request is polled for once an element.
+    // stop request is polled for once an element. Stopped there, nothing
+    // was stepped, but a target at a ray's start is lit all the same, as
+    // under --max-steps 0: the reference scan, which needs no setup, with
+    // no step allowed reports it.
     std::unique_ptr<EventStepper> stepper;
     auto stopped = [&](Limit limit) {
-        Answer answer;
-        answer.engine = EngineUsed::branches;
+        const ReferenceStepper scan(scene);
+        SolveOptions no_steps = options;
+        no_steps.max_steps = 0;
+        Answer answer = IntensitySearch(scene, no_steps, scan).run();
         answer.limit = limit;
-        answer.targets.assign(scene.targets.size(), TargetAnswer{});
         return answer;
     };
     try {
