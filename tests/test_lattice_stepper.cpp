@@ -14,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -83,15 +84,22 @@ void walk_branches_once(std::mt19937_64& rng, const Scene& s, const engine::Even
         }
 }
 
+// Every fourth case, a cap with room for the first ray's lattice only: the
+// other rays' branches are scanned, in turns with the first's.
+std::optional<std::size_t> cap_for_one_lattice(const Scene& s, int i) {
+    if (i % 4 != 3) return std::nullopt;
+    return engine::LatticeStepper::lattice_bytes_of(s, 0);
+}
+
 // Random branches of every ray, 40 events each at most (`rounds` times),
 // the rays taking turns so that the stepper switches lattices at every
 // step where the scene's rays lie on several: each event of the lattice
 // stepper must be the reference scan's.
-// `max_bytes`: the lattice stepper's cap on its lattices after the first;
-// 0 leaves every other ray's branches to the reference scan. Tallies the
-// scenes where that happened.
+// `max_bytes`: the lattice stepper's cap on its lattices; the branches of
+// rays past it go to the reference scan. Tallies the scenes where that
+// happened.
 void walk_branches(std::mt19937_64& rng, const Scene& s, Tally& tally, int rounds = 1,
-                   std::size_t max_bytes = engine::LatticeStepper::default_max_bytes) {
+                   std::optional<std::size_t> max_bytes = {}) {
     const engine::LatticeStepper fast(s, {}, max_bytes);
     const engine::ReferenceStepper plain(s);
     tally.partly_scanned += fast.scans();
@@ -117,9 +125,7 @@ TEST_CASE("the lattice stepper finds the reference scan's events on random branc
         shape.scene.max_denominator = i % 4 < 2 ? 1 : 3;
         const Scene s = shifted(test::random_optics_scene(rng, shape), shifts[i % 3]);
         INFO("case " << i << "\n" << write_scene(s));
-        // Every fourth case builds one lattice only: the other rays'
-        // branches are scanned, in turns with the first's.
-        walk_branches(rng, s, tally, 1, i % 4 == 3 ? 0 : engine::LatticeStepper::default_max_bytes);
+        walk_branches(rng, s, tally, 1, cap_for_one_lattice(s, i));
     }
     // The branches met every kind of event.
     // (15,023 events, 2,275 splits and 373 absorptions at full size.)
@@ -234,9 +240,7 @@ TEST_CASE("with diagonals, the lattice stepper finds the reference scan's events
         shape.max_elements = i % 3 == 0 ? 40 : 8;
         const Scene s = shifted(test::random_octagonal_scene(rng, shape), shifts[i % 3]);
         INFO("case " << i << "\n" << write_scene(s));
-        // Every fourth case builds one lattice only: the other rays'
-        // branches are scanned, in turns with the first's.
-        walk_branches(rng, s, tally, 1, i % 4 == 3 ? 0 : engine::LatticeStepper::default_max_bytes);
+        walk_branches(rng, s, tally, 1, cap_for_one_lattice(s, i));
     }
     // The branches met every kind of event, junctions too.
     CHECK(tally.events > 10u * static_cast<unsigned>(cases));
@@ -249,8 +253,8 @@ TEST_CASE("with diagonals, the lattice stepper finds the reference scan's events
 }
 
 TEST_CASE("past the lattices' byte cap, rays are scanned and the answers stay", "[illumination]") {
-    // Four rays on four lines: four lattices, or one and three rays left
-    // to the reference scan when the others may take no bytes.
+    // Four rays on four lines: four lattices; or, with room for the first
+    // only, one and three rays left to the reference scan; or none.
     const Scene s = parse_scene("dim 2\nmirror x 0 y 0 10\nmirror x 10 y 0 10\n"
                                 "splitter y 5 x 2 8\nmirror y 0 x 0 10\nmirror y 10 x 0 10\n"
                                 "ray 1 1 1 0\nray 1 2 1 0\nray 1 3 1 0\nray 1 4 0 1\n"
@@ -259,12 +263,17 @@ TEST_CASE("past the lattices' byte cap, rays are scanned and the answers stay", 
     const engine::LatticeStepper all(s);
     CHECK(all.lattice_count() == 4);
     CHECK_FALSE(all.scans());
-    const engine::LatticeStepper one(s, {}, 0);
+    const std::size_t first = engine::LatticeStepper::lattice_bytes_of(s, 0);
+    CHECK(first > 4096u);
+    const engine::LatticeStepper one(s, {}, first);
     CHECK(one.lattice_count() == 1);
     CHECK(one.scans());
+    const engine::LatticeStepper none(s, {}, first - 1);
+    CHECK(none.lattice_count() == 0);
+    CHECK(none.scans());
     std::mt19937_64 rng(7);
     Tally tally;
-    walk_branches(rng, s, tally, 10, 0);
+    walk_branches(rng, s, tally, 10, first);
     CHECK(tally.events > 100u);
     // The search through either stepper gives the same answer and count.
     SolveOptions options;
@@ -276,4 +285,6 @@ TEST_CASE("past the lattices' byte cap, rays are scanned and the answers stay", 
     REQUIRE(capped.targets.size() == 2);
     CHECK(capped.targets[1].status == full.targets[1].status);
     CHECK(capped.targets[1].reflections == full.targets[1].reflections);
+    const Answer scanned = engine::solve_illumination(s, options, none);
+    CHECK(scanned.states == full.states);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <optional>
 #include <stdexcept>
 
@@ -122,32 +123,42 @@ std::unique_ptr<RayLattice> on_int(LatticeScene ls, const lattice::SetupPoll& po
     }
 }
 
-// About what one more ray's lattice and shooter keep: the growth of the
-// resident set per lattice and element, measured with 50 to 100 rays on
-// distinct lattices among 10^4 random elements (bench/RESULTS.md: 111 bytes
-// in 2D, 350 in 3D, 100 with diagonals), rounded up.
-std::size_t ray_lattice_bytes(const Scene& scene) {
-    const std::size_t per_element = scene.dim == 3 ? 400 : 120;
-    return 4096 + per_element * scene.elements.size();
-}
-
 } // namespace
 
+std::size_t lattice_bytes(std::size_t elements, int dim, bool int128, bool wide) {
+    const std::size_t per_element = dim == 3 ? (wide     ? 1100
+                                                : int128 ? 650
+                                                         : 400)
+                                             : (wide     ? 350
+                                                : int128 ? 200
+                                                         : 120);
+    return 4096 + per_element * elements;
+}
+
 std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray,
-                                             const lattice::SetupPoll& poll) {
+                                             const lattice::SetupPoll& poll,
+                                             const LatticeAfford& afford) {
     LatticeScene ls = lattice::make_lattice(scene, poll, ray);
-    if (ls.magnitude < lattice::int64_limit()) return on_int<std::int64_t>(std::move(ls), poll);
-    if (ls.magnitude < lattice::int128_limit())
-        return on_int<lattice::int128_t>(std::move(ls), poll);
+    const bool int64 = ls.magnitude < lattice::int64_limit();
+    const bool int128 = !int64 && ls.magnitude < lattice::int128_limit();
+    if (!afford(lattice_bytes(ls.elements.size(), scene.dim, int128, !int64 && !int128)))
+        return nullptr;
+    if (int64) return on_int<std::int64_t>(std::move(ls), poll);
+    if (int128) return on_int<lattice::int128_t>(std::move(ls), poll);
     return on_int<Integer>(std::move(ls), poll);
 }
 
 LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll,
-                               std::size_t max_bytes)
+                               std::optional<std::size_t> max_bytes)
     : scene_(scene), octagonal_(scene.has_diagonal()) {
     const auto begin = std::chrono::steady_clock::now();
-    const std::size_t bytes_each = ray_lattice_bytes(scene);
-    std::size_t room = max_bytes;
+    std::size_t room = max_bytes.value_or(default_max_bytes);
+    const LatticeAfford afford = [&](std::size_t bytes) {
+        if (lattices_.empty() && !max_bytes) return true; // the first, uncapped
+        if (bytes > room) return false;
+        room -= bytes;
+        return true;
+    };
     for (std::size_t r = 0; r < scene.rays.size(); ++r) {
         const Ray& ray = scene.rays[r];
         std::vector<std::size_t>& same_key = by_key_[key_of(ray.start, ray.direction)];
@@ -157,20 +168,41 @@ LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& pol
             return lattices_[i]->next(ray.start, ray.direction).has_value();
         });
         if (held) continue;
-        if (!lattices_.empty()) {
-            if (bytes_each > room) {
-                scans_ = true;
-                continue;
-            }
-            room -= bytes_each;
+        std::unique_ptr<RayLattice> lattice;
+        try {
+            lattice = octagonal_ ? octagonal_ray_lattice(scene, r, poll, afford)
+                                 : axis_ray_lattice(scene, r, poll, afford);
+        } catch (const std::bad_alloc&) {
+            // A lattice's numbers are worked out before its size is known,
+            // and under a cap memory may run out there: that ray, and every
+            // later one, is scanned instead. Without a cap it is the run's
+            // memory limit, as anywhere.
+            if (!max_bytes) throw;
+            room = 0;
+        }
+        if (!lattice) {
+            scans_ = true;
+            continue;
         }
         same_key.push_back(lattices_.size());
-        lattices_.push_back(octagonal_ ? octagonal_ray_lattice(scene, r, poll)
-                                       : axis_ray_lattice(scene, r, poll));
-        cells_ += lattices_.back()->cells();
+        cells_ += lattice->cells();
+        lattices_.push_back(std::move(lattice));
     }
     setup_seconds_ =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+std::size_t LatticeStepper::lattice_bytes_of(const Scene& scene, std::size_t ray) {
+    std::size_t bytes = 0;
+    const LatticeAfford measure = [&](std::size_t b) {
+        bytes = b;
+        return false;
+    };
+    if (scene.has_diagonal())
+        octagonal_ray_lattice(scene, ray, {}, measure);
+    else
+        axis_ray_lattice(scene, ray, {}, measure);
+    return bytes;
 }
 
 LatticeStepper::LatticeKey LatticeStepper::key_of(const Vector& p, const Vector& v) const {
@@ -197,7 +229,8 @@ void LatticeStepper::describe(Answer& answer) const {
 LatticeStepper::~LatticeStepper() = default;
 
 ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
-    if (std::optional<ReferenceEvent> e = lattices_[last_]->next(p, v)) return std::move(*e);
+    if (!lattices_.empty())
+        if (std::optional<ReferenceEvent> e = lattices_[last_]->next(p, v)) return std::move(*e);
     if (const auto same_key = by_key_.find(key_of(p, v)); same_key != by_key_.end())
         for (std::size_t i : same_key->second)
             if (i != last_)
@@ -219,8 +252,9 @@ ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
 std::unique_ptr<EventStepper> fastest_stepper(const Scene& scene, const lattice::SetupPoll& poll,
                                               std::optional<std::size_t> max_state_bytes) {
     if (!LatticeStepper::applies(scene)) return std::make_unique<ReferenceStepper>(scene);
-    return std::make_unique<LatticeStepper>(
-        scene, poll, max_state_bytes ? *max_state_bytes / 3 : LatticeStepper::default_max_bytes);
+    std::optional<std::size_t> max_bytes;
+    if (max_state_bytes) max_bytes = *max_state_bytes / 3;
+    return std::make_unique<LatticeStepper>(scene, poll, max_bytes);
 }
 
 } // namespace orthoray::engine

@@ -35,21 +35,24 @@ public:
     // as scenes have them.
     static bool applies(const Scene& scene) { return scene.dim == 2 || !scene.has_diagonal(); }
 
-    // What the lattices after the first may take together by default: each
-    // is O(n), so a scene with many rays on distinct lattices would
-    // otherwise take O(rays n) memory before its first event.
+    // What the lattices after the first may take together when no cap is
+    // given: each is O(n), so a scene with many rays on distinct lattices
+    // would otherwise take O(rays n) memory before its first event.
     static constexpr std::size_t default_max_bytes = std::size_t{4} << 30;
 
     // Builds one lattice and shooter for every ray whose states no earlier
     // ray's lattice holds: O(n) memory and O(n) (grid) or O(n log n)
     // (hierarchy) time each, calling `poll` once an element (it may throw
-    // lattice::SetupStopped). The first is always built; the others only
-    // while their bytes, estimated from the element count, stay within
-    // `max_bytes`. States on no lattice built, the branches of the rays
-    // left over, are stepped by the reference scan: exact as well, O(n) an
-    // event.
+    // lattice::SetupStopped). Each is built only while the lattices' bytes,
+    // estimated once each one's integer type is known (lattice_bytes in
+    // ray_lattice.hpp), stay within `max_bytes`; without it, the first is
+    // always built and the others held to default_max_bytes. States on no
+    // lattice built, the branches of the rays left over, are stepped by the
+    // reference scan: exact as well, O(n) an event.
     explicit LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll = {},
-                            std::size_t max_bytes = default_max_bytes);
+                            std::optional<std::size_t> max_bytes = {});
+    // The bytes the lattice of ray number `ray` would be estimated at.
+    static std::size_t lattice_bytes_of(const Scene& scene, std::size_t ray);
     ~LatticeStepper() override;
 
     ReferenceEvent next(const Vector& p, const Vector& v) const override;

@@ -106,16 +106,20 @@ private:
 } // namespace
 
 std::unique_ptr<RayLattice> octagonal_ray_lattice(const Scene& scene, std::size_t ray,
-                                                  const lattice::SetupPoll& poll) {
+                                                  const lattice::SetupPoll& poll,
+                                                  const LatticeAfford& afford) {
     OctagonalLattice ol = lattice::make_octagonal_lattice(scene, poll, ray);
+    const bool int64 = ol.magnitude < lattice::int64_limit();
+    const bool int128 = !int64 && ol.magnitude < lattice::int128_limit();
+    if (!afford(lattice_bytes(ol.elements.size(), 2, int128, !int64 && !int128))) return nullptr;
     // magnitude = the largest scaled coordinate times max(|a|, |b|) of the
     // primitive direction (a, b) = w[0].
     const Integer a = abs(ol.w[0][0]), b = abs(ol.w[0][1]);
     Integer bound = ol.magnitude / (a < b ? b : a);
-    if (ol.magnitude < lattice::int64_limit())
+    if (int64)
         return std::make_unique<OctagonalRayLattice<std::int64_t>>(std::move(ol), std::move(bound),
                                                                    poll);
-    if (ol.magnitude < lattice::int128_limit())
+    if (int128)
         return std::make_unique<OctagonalRayLattice<lattice::int128_t>>(std::move(ol),
                                                                         std::move(bound), poll);
     return std::make_unique<OctagonalRayLattice<Integer>>(std::move(ol), std::move(bound), poll);

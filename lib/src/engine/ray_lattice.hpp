@@ -11,6 +11,7 @@
 #include "lattice/setup_poll.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -28,12 +29,29 @@ public:
     virtual std::size_t cells() const = 0;
 };
 
+// Asked, with a lattice's estimated bytes (lattice_bytes), whether it may be
+// built: once its numbers, and so its integer type, are known, before its
+// shooter is.
+using LatticeAfford = std::function<bool(std::size_t bytes)>;
+
+// About what a lattice and its shooter keep, from the elements its ray can
+// meet, the scene's dimension and the integer type (64 bits, 128, or GMP's
+// when `wide`): the growth of the resident set per lattice and element,
+// measured with 50 to 100 rays on distinct lattices among 10^4 random
+// elements (bench/RESULTS.md: 111 bytes in 2D, 350 in 3D, 100 with
+// diagonals; 186 and 320 in 2D on 128 bits and GMP), rounded up, and the
+// same growth assumed in 3D.
+std::size_t lattice_bytes(std::size_t elements, int dim, bool int128, bool wide);
+
 // The lattice of ray number `ray` of a scene without diagonal elements,
 // and of one of a 2D scene with them; each in the narrowest integer type
-// that lattice/lattice_int.hpp proves safe for its coordinates.
+// that lattice/lattice_int.hpp proves safe for its coordinates. Null when
+// `afford` refuses its bytes.
 std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray,
-                                             const lattice::SetupPoll& poll);
+                                             const lattice::SetupPoll& poll,
+                                             const LatticeAfford& afford);
 std::unique_ptr<RayLattice> octagonal_ray_lattice(const Scene& scene, std::size_t ray,
-                                                  const lattice::SetupPoll& poll);
+                                                  const lattice::SetupPoll& poll,
+                                                  const LatticeAfford& afford);
 
 } // namespace orthoray::engine
