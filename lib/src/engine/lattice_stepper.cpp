@@ -126,13 +126,9 @@ std::unique_ptr<RayLattice> on_int(LatticeScene ls, const lattice::SetupPoll& po
 } // namespace
 
 std::size_t lattice_bytes(std::size_t elements, int dim, bool int128, bool wide) {
-    const std::size_t per_element = dim == 3 ? (wide     ? 1100
-                                                : int128 ? 650
-                                                         : 400)
-                                             : (wide     ? 350
-                                                : int128 ? 200
-                                                         : 120);
-    return 4096 + per_element * elements;
+    // Bytes an element: 2D then 3D, on 64-bit, 128-bit and GMP integers.
+    static constexpr std::size_t per_element[2][3] = {{120, 200, 350}, {400, 650, 1100}};
+    return 4096 + per_element[dim == 3 ? 1 : 0][wide ? 2 : int128 ? 1 : 0] * elements;
 }
 
 std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray,
