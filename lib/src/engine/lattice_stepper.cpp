@@ -135,18 +135,14 @@ std::unique_ptr<RayLattice> axis_ray_lattice(const Scene& scene, std::size_t ray
                                              const lattice::SetupPoll& poll,
                                              const LatticeAfford& afford) {
     LatticeScene ls = lattice::make_lattice(scene, poll, ray);
-    const bool int64 = ls.magnitude < lattice::int64_limit();
-    const bool int128 = !int64 && ls.magnitude < lattice::int128_limit();
-    if (!afford(lattice_bytes(ls.elements.size(), scene.dim, int128, !int64 && !int128)))
-        return nullptr;
-    if (int64) return on_int<std::int64_t>(std::move(ls), poll);
-    if (int128) return on_int<lattice::int128_t>(std::move(ls), poll);
-    return on_int<Integer>(std::move(ls), poll);
+    const Integer magnitude = ls.magnitude;
+    return build_narrowest(magnitude, ls.elements.size(), scene.dim, afford,
+                           [&](auto zero) { return on_int<decltype(zero)>(std::move(ls), poll); });
 }
 
 LatticeStepper::LatticeStepper(const Scene& scene, const lattice::SetupPoll& poll,
                                std::optional<std::size_t> max_bytes)
-    : scene_(scene), octagonal_(scene.has_diagonal()) {
+    : scene_(scene), octagonal_(scene.has_diagonal()), scan_(scene) {
     const auto begin = std::chrono::steady_clock::now();
     std::size_t room = max_bytes.value_or(default_max_bytes);
     const LatticeAfford afford = [&](std::size_t bytes) {
@@ -235,11 +231,7 @@ ReferenceEvent LatticeStepper::next(const Vector& p, const Vector& v) const {
                     return std::move(*e);
                 }
     // A ray whose lattice was left unbuilt: its branches are scanned.
-    if (scans_) {
-        ReferenceEvent event = reference_step(scene_, p, v);
-        mark_reference_junction(scene_, v, event);
-        return event;
-    }
+    if (scans_) return scan_.next(p, v);
     // Every branch stays on its ray's lattice (see the header), so a state
     // that no lattice holds did not come from the search.
     throw std::logic_error("LatticeStepper: a state off every ray's lattice");

@@ -88,6 +88,7 @@ private:
     // one, so it is tried first.
     mutable std::size_t last_ = 0;
     bool scans_ = false;       // a ray's lattice was left unbuilt: scan its states
+    ReferenceStepper scan_;    // what steps them
     double setup_seconds_ = 0; // building every lattice and shooter
     std::size_t cells_ = 0;    // the grids' cells together (a hierarchy has none)
 };

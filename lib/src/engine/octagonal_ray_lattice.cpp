@@ -109,20 +109,16 @@ std::unique_ptr<RayLattice> octagonal_ray_lattice(const Scene& scene, std::size_
                                                   const lattice::SetupPoll& poll,
                                                   const LatticeAfford& afford) {
     OctagonalLattice ol = lattice::make_octagonal_lattice(scene, poll, ray);
-    const bool int64 = ol.magnitude < lattice::int64_limit();
-    const bool int128 = !int64 && ol.magnitude < lattice::int128_limit();
-    if (!afford(lattice_bytes(ol.elements.size(), 2, int128, !int64 && !int128))) return nullptr;
     // magnitude = the largest scaled coordinate times max(|a|, |b|) of the
     // primitive direction (a, b) = w[0].
+    const Integer magnitude = ol.magnitude;
     const Integer a = abs(ol.w[0][0]), b = abs(ol.w[0][1]);
-    Integer bound = ol.magnitude / (a < b ? b : a);
-    if (int64)
-        return std::make_unique<OctagonalRayLattice<std::int64_t>>(std::move(ol), std::move(bound),
-                                                                   poll);
-    if (int128)
-        return std::make_unique<OctagonalRayLattice<lattice::int128_t>>(std::move(ol),
-                                                                        std::move(bound), poll);
-    return std::make_unique<OctagonalRayLattice<Integer>>(std::move(ol), std::move(bound), poll);
+    Integer bound = magnitude / (a < b ? b : a);
+    return build_narrowest(magnitude, ol.elements.size(), 2, afford,
+                           [&](auto zero) -> std::unique_ptr<RayLattice> {
+                               return std::make_unique<OctagonalRayLattice<decltype(zero)>>(
+                                   std::move(ol), std::move(bound), poll);
+                           });
 }
 
 } // namespace orthoray::engine

@@ -8,9 +8,11 @@
 #pragma once
 
 #include "engine/reference_step.hpp"
+#include "lattice/lattice_int.hpp"
 #include "lattice/setup_poll.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -42,6 +44,20 @@ using LatticeAfford = std::function<bool(std::size_t bytes)>;
 // diagonals; 186 and 320 in 2D on 128 bits and GMP), rounded up, and the
 // same growth assumed in 3D.
 std::size_t lattice_bytes(std::size_t elements, int dim, bool int128, bool wide);
+
+// build(Int{}) with the narrowest integer type lattice/lattice_int.hpp
+// proves safe for a lattice whose values are below `magnitude`, once
+// `afford` has accepted the lattice's estimated bytes; null when it has not.
+template <class Build>
+std::unique_ptr<RayLattice> build_narrowest(const Integer& magnitude, std::size_t elements, int dim,
+                                            const LatticeAfford& afford, Build&& build) {
+    const bool int64 = magnitude < lattice::int64_limit();
+    const bool int128 = !int64 && magnitude < lattice::int128_limit();
+    if (!afford(lattice_bytes(elements, dim, int128, !int64 && !int128))) return nullptr;
+    if (int64) return build(std::int64_t{});
+    if (int128) return build(lattice::int128_t{});
+    return build(Integer{});
+}
 
 // The lattice of ray number `ray` of a scene without diagonal elements,
 // and of one of a 2D scene with them; each in the narrowest integer type
