@@ -41,8 +41,9 @@ using LatticeAfford = std::function<bool(std::size_t bytes)>;
 // when `wide`): the growth of the resident set per lattice and element,
 // measured with 50 to 100 rays on distinct lattices among 10^4 random
 // elements (bench/RESULTS.md: 111 bytes in 2D, 350 in 3D, 100 with
-// diagonals; 186 and 320 in 2D on 128 bits and GMP), rounded up, and the
-// same growth assumed in 3D.
+// diagonals; 186 and 320 in 2D on 128 bits and GMP), rounded up. 3D on
+// 128 bits and GMP was not measured: its figures grow from 64 bits as the
+// 2D ones do.
 std::size_t lattice_bytes(std::size_t elements, int dim, bool int128, bool wide);
 
 // build(Int{}) with the narrowest integer type lattice/lattice_int.hpp
