@@ -1,7 +1,7 @@
 // The lattice stepper for scenes with diagonals. A state is (integer point,
 // direction index); one step asks the hierarchy for the next hit, checks the
 // target on the segment, moves by t w and looks the leaving direction up in
-// the lattice's outcome table (filled from engine/event_rule).
+// the outcome table (lattice::OctagonalOutcomes, filled from engine/event_rule).
 //
 // Diagonals make the step map non-injective (where a diagonal and an axis
 // element meet, a ray across both and a ray sliding along the axis element
@@ -55,7 +55,7 @@ class Run {
 public:
     Run(const OctagonalLattice& lattice, const SolveOptions& options,
         const lattice::SetupPoll& poll)
-        : lattice_(lattice), options_(options), shooter_(lattice, poll) {
+        : lattice_(lattice), options_(options), outcomes_(lattice), shooter_(lattice, poll) {
         for (int j = 0; j < 2; ++j) {
             s_.p[j] = lattice::from_integer<Int>(lattice.start[j]);
             target_[j] = lattice::from_integer<Int>(lattice.target[j]);
@@ -97,6 +97,7 @@ public:
 private:
     const OctagonalLattice& lattice_;
     const SolveOptions& options_;
+    const lattice::OctagonalOutcomes outcomes_;
     const shoot::OctagonalBvh<Int> shooter_;
     Int w_[lattice::direction_count][2];
     State<Int> s_, first_{};
@@ -111,7 +112,7 @@ private:
     std::optional<State<Int>> next(const State<Int>& s,
                                    const shoot::OctagonalShot<Int>& shot) const {
         if (shot.escape) return std::nullopt;
-        const std::uint8_t d = lattice_.next(s.d, shot.mirrors, shot.absorbers);
+        const std::uint8_t d = outcomes_.next(s.d, shot.mirrors, shot.absorbers);
         if (d == lattice::absorbed) return std::nullopt;
         State<Int> n;
         for (int j = 0; j < 2; ++j) n.p[j] = s.p[j] + shot.t * w_[s.d][j];

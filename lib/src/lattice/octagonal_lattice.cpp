@@ -56,40 +56,6 @@ Element representative(Orientation o, ElementKind kind) {
     return e;
 }
 
-// The outcome table: for each direction and each set of mirror and absorber
-// orientations that all cross it, what engine/event_rule says leaves.
-void fill_outcomes(OctagonalLattice& out) {
-    std::array<Element, 4> mirror, absorber;
-    for (unsigned o = 0; o < 4; ++o) {
-        mirror[o] = representative(Orientation(o), ElementKind::mirror);
-        absorber[o] = representative(Orientation(o), ElementKind::absorber);
-    }
-    out.outcome.fill(absorbed);
-    for (unsigned d = 0; d < direction_count; ++d) {
-        unsigned crossing = 0;
-        for (unsigned o = 0; o < 4; ++o)
-            if (crosses(Orientation(o), out.w[d])) crossing |= 1u << o;
-        const Vector v = out.direction(d);
-        for (unsigned m = 0; m < 16; ++m)
-            for (unsigned a = 0; a < 16; ++a) {
-                if ((m | a) == 0 || ((m | a) & ~crossing) != 0) continue;
-                std::vector<const Element*> acting;
-                for (unsigned o = 0; o < 4; ++o) {
-                    if (m & (1u << o)) acting.push_back(&mirror[o]);
-                    if (a & (1u << o)) acting.push_back(&absorber[o]);
-                }
-                const engine::EventOutcome outcome = engine::event_outcome(2, acting, v);
-                if (outcome.absorbed) continue;
-                const Vector& leaving = outcome.outgoing.front().direction;
-                for (unsigned e = 0; e < direction_count; ++e)
-                    if (out.direction(e) == leaving) {
-                        out.outcome[(d * 16 + m) * 16 + a] = out.canonical[e];
-                        break;
-                    }
-            }
-    }
-}
-
 } // namespace
 
 OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& poll,
@@ -181,8 +147,41 @@ OctagonalLattice make_octagonal_lattice(const Scene& scene, const SetupPoll& pol
         out.elements.push_back(std::move(le));
     }
     out.magnitude = largest * std::max(abs_of(a), abs_of(b));
-    fill_outcomes(out);
     return out;
+}
+
+// Every combination of orientations that cross direction d, asked of the
+// acting rule with one representative element of each.
+OctagonalOutcomes::OctagonalOutcomes(const OctagonalLattice& lattice) {
+    std::array<Element, 4> mirror, absorber;
+    for (unsigned o = 0; o < 4; ++o) {
+        mirror[o] = representative(Orientation(o), ElementKind::mirror);
+        absorber[o] = representative(Orientation(o), ElementKind::absorber);
+    }
+    table_.fill(absorbed);
+    for (unsigned d = 0; d < direction_count; ++d) {
+        unsigned crossing = 0;
+        for (unsigned o = 0; o < 4; ++o)
+            if (crosses(Orientation(o), lattice.w[d])) crossing |= 1u << o;
+        const Vector v = lattice.direction(d);
+        for (unsigned m = 0; m < 16; ++m)
+            for (unsigned a = 0; a < 16; ++a) {
+                if ((m | a) == 0 || ((m | a) & ~crossing) != 0) continue;
+                std::vector<const Element*> acting;
+                for (unsigned o = 0; o < 4; ++o) {
+                    if (m & (1u << o)) acting.push_back(&mirror[o]);
+                    if (a & (1u << o)) acting.push_back(&absorber[o]);
+                }
+                const engine::EventOutcome outcome = engine::event_outcome(2, acting, v);
+                if (outcome.absorbed) continue;
+                const Vector& leaving = outcome.outgoing.front().direction;
+                for (unsigned e = 0; e < direction_count; ++e)
+                    if (lattice.direction(e) == leaving) {
+                        table_[(d * 16 + m) * 16 + a] = lattice.canonical[e];
+                        break;
+                    }
+            }
+    }
 }
 
 Vector OctagonalLattice::point(const Coords& p) const {

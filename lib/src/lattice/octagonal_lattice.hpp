@@ -68,18 +68,27 @@ struct OctagonalLattice {
     const Scene* scene = nullptr;
     const Ray* ray = nullptr; // the ray whose lattice this is
 
-    // The direction leaving an event on direction d, where the mirrors
-    // meeting it have the orientations in `mirrors` (bit o) and the
-    // absorbers those in `absorbers`: a canonical index, or `absorbed`.
-    // Asked of engine/event_rule once per entry by make_octagonal_lattice.
-    std::uint8_t next(unsigned d, unsigned mirrors, unsigned absorbers) const {
-        return outcome[(d * 16 + mirrors) * 16 + absorbers];
-    }
-    std::array<std::uint8_t, direction_count * 16 * 16> outcome{};
-
     // Back to scene coordinates (exact).
     Vector point(const Coords& p) const;
     Vector direction(unsigned d) const;
+};
+
+// What leaves an event on a lattice: for direction d, where the mirrors
+// meeting the event have the orientations in `mirrors` (bit o) and the
+// absorbers those in `absorbers`, a canonical direction index, or
+// `absorbed`. Each entry is asked of engine/event_rule once, when the table
+// is built (about two thousand calls, a millisecond). The octagonal engine
+// reads it once a reflection; the branch search's lattices do not build
+// it, since they ask the acting rule about the elements at each hit.
+class OctagonalOutcomes {
+public:
+    explicit OctagonalOutcomes(const OctagonalLattice& lattice);
+    std::uint8_t next(unsigned d, unsigned mirrors, unsigned absorbers) const {
+        return table_[(d * 16 + mirrors) * 16 + absorbers];
+    }
+
+private:
+    std::array<std::uint8_t, direction_count * 16 * 16> table_{};
 };
 
 // The lattice of ray number `ray_index` (from 0) of the scene; its `target`
