@@ -148,6 +148,17 @@ TEST_CASE("limits stop the search with nothing claimed", "[puzzle][solve]") {
     CHECK(s.status == LazorSolution::Status::limit);
     CHECK(s.limit == "nodes");
     CHECK(!s.placed);
+    // The count is one thread's, so never above the budget, whatever the
+    // pieces searched beside the one that ran out (mad_1 needs 77 nodes).
+    for (const std::uint64_t budget : {1, 10, 75, 76})
+        for (const unsigned jobs : {1u, 4u}) {
+            options.max_nodes = budget;
+            options.jobs = jobs;
+            s = solve_lazor(level, options);
+            INFO("budget " << budget << ", " << jobs << " jobs");
+            CHECK(s.status == LazorSolution::Status::limit);
+            CHECK(s.nodes == budget);
+        }
 
     const std::atomic<bool> stop{true};
     options = {};

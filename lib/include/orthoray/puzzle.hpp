@@ -115,8 +115,9 @@ struct LazorSolution {
     // With `all`: the number of placements that light every point (exact,
     // as a decimal string: it can exceed 64 bits on big open grids).
     std::string solutions;
-    // Search nodes a one-thread search visits to its answer (at a limit:
-    // every node visited).
+    // Search nodes a one-thread search visits to its answer; at the node
+    // budget, the budget (what one thread visits before it stops); at a
+    // stop request, every node visited.
     std::uint64_t nodes = 0;
     // limit: which limit ("nodes" or "stop").
     std::string limit;

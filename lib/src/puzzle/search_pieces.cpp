@@ -130,9 +130,20 @@ LazorPieceResult LazorSearchPieces::search(std::size_t index, const std::functio
 
 std::optional<LazorSearchOutcome>
 LazorSearchPieces::outcome(const std::vector<std::optional<LazorPieceResult>>& results) const {
-    auto limit = [&](const char* why) {
+    // At the node budget, one thread would have visited exactly the budget:
+    // the pieces before the one that ran out complete within it, and that
+    // one leaves none. (Each piece is given the whole budget, so pieces
+    // searched beside it may have visited more; they are not counted.)
+    auto out_of_nodes = [&] {
         LazorSearchOutcome o;
-        o.limit = why;
+        o.limit = "nodes";
+        o.nodes = *max_nodes_;
+        return o;
+    };
+    // A stop request has no one-thread count: the nodes visited are reported.
+    auto stopped = [&] {
+        LazorSearchOutcome o;
+        o.limit = "stop";
         for (const std::optional<LazorPieceResult>& r : results)
             if (r) o.nodes += r->nodes;
         return o;
@@ -147,11 +158,11 @@ LazorSearchPieces::outcome(const std::vector<std::optional<LazorPieceResult>>& r
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
         if (i >= results.size() || !results[i]) return std::nullopt;
         const LazorPieceResult& r = *results[i];
-        if (r.end == LazorPieceResult::End::budget) return limit("nodes");
-        if (r.end == LazorPieceResult::End::stopped) return limit("stop");
+        if (r.end == LazorPieceResult::End::budget) return out_of_nodes();
+        if (r.end == LazorPieceResult::End::stopped) return stopped();
         nodes += r.nodes;
         o.nodes = nodes + (mode_ == Mode::other ? nodes_above_[i] : 0);
-        if (max_nodes_ && o.nodes > *max_nodes_) return limit("nodes");
+        if (max_nodes_ && o.nodes > *max_nodes_) return out_of_nodes();
         if (mode_ == Mode::all) count += Integer(r.solutions);
         if (r.first.empty() || !o.first.empty()) continue;
         o.first = r.first;
