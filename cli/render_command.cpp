@@ -55,13 +55,18 @@ private:
 };
 
 // Holds a certificate's first points back until the certificate is known to
-// list its path: an induction certificate lists it only up to the first
-// reflection, and its picture is simulated instead (release() is then never
-// called and the held points are dropped).
+// list its path. An induction certificate lists a prefix and then its proof;
+// the induction engine's lists only up to the first reflection, too little to
+// draw, so when the whole certificate fits here its picture is simulated
+// instead (release() is then never called and the held points are dropped).
+// The default engine's lists what it simulated before inducing, often
+// thousands of points: those are the path's, and are drawn as a path
+// certificate's would be.
 class HeldPrefix : public PathSink {
 public:
     explicit HeldPrefix(PathSink& next) : next_(next) {}
     void visit(const Vector& point, const Vector& direction) override {
+        ++points_;
         if (released_) return next_.visit(point, direction);
         held_.push_back({point, direction});
         if (held_.size() > most_held) release();
@@ -71,12 +76,15 @@ public:
         held_.clear();
         released_ = true;
     }
+    bool released() const { return released_; }
+    std::uint64_t points() const { return points_; }
 
 private:
-    static constexpr std::size_t most_held = 16; // an induction certificate lists 2
+    static constexpr std::size_t most_held = 16; // the induction engine's certificates list 2
     PathSink& next_;
     std::vector<std::pair<Vector, Vector>> held_;
     bool released_ = false;
+    std::uint64_t points_ = 0;
 };
 
 std::string scene_summary(const std::string& file, const Scene& scene) {
@@ -278,9 +286,17 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         else
             renderer.add_caption(verdict_line(claim.answer, claim.reason, claim.reflections) +
                                  " (claimed by " + source + "; 'orthoray verify' checks it)");
-        if (!claim.lists_path) {
-            renderer.add_caption("path: simulated; an induction certificate lists none");
+        if (!claim.lists_path && !held.released()) {
+            renderer.add_caption("path: simulated; the induction certificate lists " +
+                                 std::to_string(held.points()) + " points only");
             end = draw_first_reflections(scene, args, renderer);
+        } else if (!claim.lists_path) {
+            // The prefix is drawn; the path goes on past it.
+            renderer.add_caption(
+                first.cut() ? "path: the first " + std::to_string(args.steps) +
+                                  " segments of the certificate (--steps)"
+                            : "path: the " + std::to_string(held.points()) +
+                                  " points the induction certificate lists before its proof");
         } else {
             held.release();
             if (first.cut())

@@ -180,8 +180,9 @@ TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli]
 }
 
 TEST_CASE("render draws an induction certificate's path by simulating it", "[cli][render]") {
-    // An induction certificate lists the path up to the first reflection
-    // only: the caption is its claim, the picture the simulated path.
+    // The induction engine's certificate lists the path up to the first
+    // reflection only: the caption is its claim, the picture the simulated
+    // path.
     TempDir dir;
     const std::string scene = instance("2d/box-corner-3x5.scene");
     const std::string cert = dir.path("induced.cert");
@@ -197,7 +198,7 @@ TEST_CASE("render draws an induction certificate's path by simulating it", "[cli
     const std::string picture = slurp(svg);
     CHECK(picture.find("answer yes, reason hit, 6 reflections (claimed by induced.cert") !=
           std::string::npos);
-    CHECK(picture.find("path: simulated; an induction certificate lists none") !=
+    CHECK(picture.find("path: simulated; the induction certificate lists 2 points only") !=
           std::string::npos);
     // Cut before its verdict: drawn all the same, and said to be incomplete.
     const std::string text = slurp(cert);
@@ -206,6 +207,36 @@ TEST_CASE("render draws an induction certificate's path by simulating it", "[cli
         run_cli("render " + quote(scene) + " --certificate " + quote(cut) + " -o " + quote(svg));
     CHECK(c.status == 0);
     CHECK(slurp(svg).find("incomplete certificate cut.cert") != std::string::npos);
+}
+
+TEST_CASE("render draws the prefix the default engine's induction certificate lists",
+          "[cli][render]") {
+    // The default engine simulates 16,384 reflections of the 2^20 + 1 by
+    // 2^20 box before it induces, and its certificate lists them: they are
+    // the path's, drawn as a path certificate's are, and nothing is
+    // simulated on top of them.
+    TempDir dir;
+    const std::string scene = dir.path("box.scene"), cert = dir.path("box.cert");
+    REQUIRE(run_cli("generate coprime-box --k 20 -o " + quote(scene)).status == 0);
+    REQUIRE(run_cli("solve " + quote(scene) + " --certificate " + quote(cert)).status == 0);
+    REQUIRE(slurp(cert).find("method induction") != std::string::npos);
+    const std::string svg = dir.path("box.svg");
+    CliResult r =
+        run_cli("render " + quote(scene) + " --certificate " + quote(cert) + " -o " + quote(svg));
+    INFO(r.err);
+    CHECK(r.status == 0);
+    std::string picture = slurp(svg);
+    CHECK(picture.find("path: the 16385 points the induction certificate lists before its "
+                       "proof") != std::string::npos);
+    CHECK(picture.find("simulated") == std::string::npos);
+    r = run_cli("render " + quote(scene) + " --certificate " + quote(cert) + " --steps 100 -o " +
+                quote(svg));
+    CHECK(r.status == 0);
+    CHECK(r.out.find("(100 segments") != std::string::npos);
+    picture = slurp(svg);
+    CHECK(picture.find("path: the first 100 segments of the certificate (--steps)") !=
+          std::string::npos);
+    CHECK(picture.find("simulated") == std::string::npos);
 }
 
 TEST_CASE("render writes a PNG through rsvg-convert", "[cli][render][slow]") {

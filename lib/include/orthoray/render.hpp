@@ -62,7 +62,8 @@ struct BranchWalk {
 };
 
 // Walks every branch of every ray, each state (event point, outgoing
-// direction) once, with the reference step and the acting rule of
+// direction) once, with the illumination search's stepper (the rays'
+// lattices where they apply, engine::fastest_stepper) and the acting rule of
 // docs/optics.md, and hands each state's segment to `sink` in order of
 // least reflections (a 0-1 breadth-first search: a pass-through costs 0, a
 // reflection 1). At most `max_states` states; the monitor is polled every
