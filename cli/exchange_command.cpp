@@ -24,7 +24,9 @@ Command add_exchange(CLI::App& app) {
         "reads, with what happens on each piece (docs/induction.md).\n\n"
         "Example:\n"
         "  orthoray exchange instances/2d/box-corner-3x5.scene --json");
-    cmd->add_option("FILE", *file, "a 2D scene whose ray reflects at least once")->required();
+    cmd->add_option("FILE", *file,
+                    "a 2D scene whose ray moves along neither axis and reflects at least once")
+        ->required();
     cmd->add_flag("--json", *json, "one JSON object instead of the text form");
     add_scene_format_option(cmd, *format);
     return [file, format, json] {
@@ -32,9 +34,9 @@ Command add_exchange(CLI::App& app) {
         const std::optional<IntervalExchange> exchange = exchange_of(scene);
         if (!exchange)
             throw UsageError("found no interval exchange for '" + *file +
-                             "', expected a 2D scene without one-sided elements whose ray "
-                             "reflects at least once and whose tables fit the induction's cap "
-                             "(docs/induction.md)");
+                             "', expected a 2D scene without one-sided elements whose ray moves "
+                             "along neither axis and reflects at least once, and whose tables "
+                             "fit the induction's cap (docs/induction.md)");
         std::ostringstream out; // whole or nothing on stdout
         write_exchange(*exchange, out, *json ? ExchangeFormat::json : ExchangeFormat::text);
         std::cout << out.str();
