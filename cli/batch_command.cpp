@@ -29,6 +29,10 @@ void check(const BatchArgs& args) {
     if (!args.certificates.empty() && !std::filesystem::is_directory(args.certificates))
         throw UsageError("found --certificates '" + args.certificates +
                          "', expected an existing directory");
+    // Bad --generate words are refused here, before the results file is
+    // opened (and, without --resume, emptied): the workers' own generators
+    // would find them only after.
+    if (!args.generate.empty()) SceneGenerator{args.generate};
 }
 
 } // namespace

@@ -490,4 +490,14 @@ TEST_CASE("batch --generate decides each seed's scene as generate then solve wou
     CHECK(run_cli("batch --generate " + quote(words) + " --seeds 3..2").status == 2);
     CHECK(run_cli("batch --generate 'random --seed 4' --seeds 1").status == 2);
     CHECK(run_cli("batch --generate 'random --frobnicate' --seeds 1").status == 2);
+    // Words refused by the family's own checks leave an existing results
+    // file as it was: they are refused before it is opened.
+    const std::string kept = dir.write("kept.jsonl", "keep\n");
+    for (const char* bad : {"random --dim 9 --mirrors 10", "random --mirrors 10 --seed 3"}) {
+        INFO(bad);
+        const CliResult refused = run_cli("batch --generate " + quote(bad) +
+                                          " --seeds 1..10 -o " + quote(kept));
+        CHECK(refused.status == 2);
+        CHECK(slurp(kept) == "keep\n");
+    }
 }
