@@ -140,11 +140,20 @@ void ResultsLog::append(const std::string& line) {
         return;
     }
     if (fd_ < 0) throw WriteError("the results file '" + path_ + "' is closed");
+    const off_t start = ::lseek(fd_, 0, SEEK_CUR);
     std::size_t written = 0;
     while (written < bytes.size()) {
         const ssize_t n = ::write(fd_, bytes.data() + written, bytes.size() - written);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) cannot_write(path_, errno);
+        if (n < 0) {
+            // A full disk or a file size limit can take part of the line:
+            // take that part back, so that the file holds whole lines only
+            // (docs/batch.md). Should even that fail, --resume drops it.
+            const int error = errno;
+            if (written > 0 && start >= 0 && ::ftruncate(fd_, start) == 0)
+                ::lseek(fd_, start, SEEK_SET);
+            cannot_write(path_, error);
+        }
         written += static_cast<std::size_t>(n);
     }
     if (const auto now = std::chrono::steady_clock::now(); now >= next_sync_) {

@@ -25,6 +25,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -353,6 +354,29 @@ TEST_CASE("batch decides Lazor levels as puzzle solve --json does, bad ones as e
     CHECK(capped_lines.lines[0]["limit"] == "nodes");
 }
 
+TEST_CASE("batch stopped by a write error leaves whole lines only", "[batch][cli]") {
+    // A file size limit (the shell's ulimit -f, in 512-byte blocks) cuts the
+    // results file in the middle of a line; the line's written part is taken
+    // back, so the file ends at a newline and --resume drops nothing.
+    const TempDir dir;
+    const std::string out = dir.path("cut.jsonl");
+    const std::string sweep = " batch --generate 'random --dim 2 --mirrors 30 --box' "
+                              "--seeds 1..400 --jobs 1 -o " +
+                              quote(out);
+    const int raw = std::system(
+        ("ulimit -f 20; '" + std::string(ORTHORAY_CLI) + "'" + sweep + " 2>/dev/null").c_str());
+    REQUIRE(WIFEXITED(raw));
+    CHECK(WEXITSTATUS(raw) == 5);
+    const std::string cut = slurp(out);
+    REQUIRE(cut.size() > 1000);
+    CHECK(cut.size() <= 20 * 512);
+    CHECK(cut.back() == '\n');
+    const CliResult resumed = run_cli(sweep.substr(1) + " --resume");
+    CHECK(resumed.status == 0);
+    CHECK(resumed.err.find("dropped") == std::string::npos);
+    CHECK(read_results(slurp(out)).lines.size() == 400);
+}
+
 TEST_CASE("batch refuses what it cannot do, before deciding anything", "[batch][cli]") {
     const TempDir dir;
     const std::string scenes = quote(source_path("instances/2d"));
@@ -495,8 +519,8 @@ TEST_CASE("batch --generate decides each seed's scene as generate then solve wou
     const std::string kept = dir.write("kept.jsonl", "keep\n");
     for (const char* bad : {"random --dim 9 --mirrors 10", "random --mirrors 10 --seed 3"}) {
         INFO(bad);
-        const CliResult refused = run_cli("batch --generate " + quote(bad) +
-                                          " --seeds 1..10 -o " + quote(kept));
+        const CliResult refused =
+            run_cli("batch --generate " + quote(bad) + " --seeds 1..10 -o " + quote(kept));
         CHECK(refused.status == 2);
         CHECK(slurp(kept) == "keep\n");
     }
