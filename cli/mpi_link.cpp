@@ -13,6 +13,9 @@ MpiSession::MpiSession() {
 }
 
 MpiSession::~MpiSession() {
+    // Rank 0's report may still sit in stdio's buffers, and MPI_Finalize
+    // can block long enough for mpirun, told to stop, to send SIGKILL.
+    std::fflush(nullptr);
     MPI_Finalize();
 }
 

@@ -145,9 +145,13 @@ int search_level(const PuzzleSolveArgs& args, const CLI::Option* max_nodes, std:
         progress.finish();
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - begin_search).count();
+    // A stop that is not the node budget is the deadline only once it has
+    // passed: under MPI a worker's signal stops its pieces, which rank 0's
+    // watcher never sees.
+    const bool timed_out = !interrupted && deadline && Clock::now() >= *deadline;
     const std::string limit = solution.limit == "nodes" ? "nodes"
-                              : interrupted             ? "interrupt"
-                                                        : "time";
+                              : timed_out               ? "time"
+                                                        : "interrupt";
     const unsigned jobs = ranks > 0       ? ranks
                           : args.jobs > 0 ? args.jobs
                                           : std::max(1u, std::thread::hardware_concurrency());
