@@ -290,18 +290,14 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
             renderer.add_caption("path: simulated; the induction certificate lists " +
                                  std::to_string(held.points()) + " points only");
             end = draw_first_reflections(scene, args, renderer);
-        } else if (!claim.lists_path) {
-            // The prefix is drawn; the path goes on past it.
-            renderer.add_caption(
-                first.cut() ? "path: the first " + std::to_string(args.steps) +
-                                  " segments of the certificate (--steps)"
-                            : "path: the " + std::to_string(held.points()) +
-                                  " points the induction certificate lists before its proof");
         } else {
             held.release();
             if (first.cut())
                 renderer.add_caption("path: the first " + std::to_string(args.steps) +
                                      " segments of the certificate (--steps)");
+            else if (!claim.lists_path) // the prefix is drawn; the path goes on past it
+                renderer.add_caption("path: the " + std::to_string(held.points()) +
+                                     " points the induction certificate lists before its proof");
             else if (claim.complete)
                 end = {claim.reason, claim.direction};
         }
