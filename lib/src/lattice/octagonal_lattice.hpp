@@ -77,7 +77,7 @@ struct OctagonalLattice {
 // meeting the event have the orientations in `mirrors` (bit o) and the
 // absorbers those in `absorbers`, a canonical direction index, or
 // `absorbed`. Each entry is asked of engine/event_rule once, when the table
-// is built (about two thousand calls, a millisecond). The octagonal engine
+// is built (about two thousand calls, some 0.3 ms). The octagonal engine
 // reads it once a reflection; the branch search's lattices do not build
 // it, since they ask the acting rule about the elements at each hit.
 class OctagonalOutcomes {
