@@ -92,7 +92,7 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
            "--shooter", c.shooter,
            "how the lattice engine finds the next hit: auto (default: in 3D the "
            "cross-section grid, in 2D the uniform grid and then piece tables once "
-           "max(16384, 64 n) reflections have not answered; a bounding volume hierarchy when "
+           "max(16384, 32 n) reflections have not answered; a bounding volume hierarchy when "
            "elements cluster), grid (uniform grid), bvh, pieces (2D piece tables from the "
            "start) or section (cross-section grid)")
         ->check(CLI::IsMember(names(shooters)));

@@ -1,9 +1,10 @@
 // What only the piece tables promise: few pieces where runs merge, a
-// refusal past their budget, and maps that change exactly at the events the
-// sweep handles (checked on scenes crowded with corners, T-junctions and
-// mirrors in line). Their answers against brute
-// force from every lattice point of every mirror are in
-// test_next_hit_conformance.cpp.
+// refusal past their budget, maps that change exactly at the events the
+// sweep handles, and the solver's choice of them once a 2D run is long (checked on scenes crowded
+// with corners, T-junctions and mirrors in line). Their answers against brute force from every
+// lattice point of every mirror are in test_next_hit_conformance.cpp.
+#include "orthoray/parse.hpp"
+#include "orthoray/solve.hpp"
 #include "shoot/piece_table.hpp"
 #include "support/brute_force_shot.hpp"
 #include "support/lattice_segments.hpp"
@@ -182,4 +183,43 @@ TEMPLATE_TEST_CASE("piece tables answer beside corners and T-junctions as the gr
         test::require_tables_answer(
             ls, *table, [&](const TestType(&p)[2], unsigned d) { return grid.shoot(p, d); });
     }
+}
+
+namespace {
+
+// A box the ray circles for about 4 x 10^6 reflections, and `outside`
+// mirrors below it that it never reaches but that count as elements.
+Scene long_box(int outside) {
+    std::ostringstream text;
+    text << "dim 2\nmirror x 0 y 0 1000000\nmirror x 1000003 y 0 1000000\n"
+            "mirror y 0 x 0 1000003\nmirror y 1000000 x 0 1000003\n";
+    for (int k = 1; k <= outside; ++k) text << "mirror y -" << k << " x 0 1\n";
+    text << "ray 1 2 1 1\ntarget 2 2\n"; // x + y stays odd along the ray
+    return read_scene(text.str());
+}
+
+} // namespace
+
+TEST_CASE("a 2D run steps on the grid for max(2^14, 32 n) reflections, then on the tables",
+          "[pieces][lattice]") {
+    // The ski-rental phase of lattice_engine.cpp: long enough to stay
+    // instant for short questions, short enough that a long run is not
+    // paying the grid's slower steps for long (docs/piece-tables.md).
+    auto run = [](const Scene& scene, std::uint64_t steps) {
+        SolveOptions options;
+        options.engine = Engine::lattice;
+        options.max_steps = steps;
+        const Answer a = solve(scene, options);
+        CHECK(a.reason == Reason::limit);
+        CHECK(a.reflections == steps);
+        return a.shooter;
+    };
+    // 4 elements: the floor of 2^14 reflections.
+    const Scene small = long_box(0);
+    CHECK(run(small, 16000) == ShooterUsed::grid);
+    CHECK(run(small, 17000) == ShooterUsed::pieces);
+    // 1,000 elements: 32,000 reflections (64 a mirror would wait for 64,000).
+    const Scene crowded = long_box(996);
+    CHECK(run(crowded, 30000) == ShooterUsed::grid);
+    CHECK(run(crowded, 34000) == ShooterUsed::pieces);
 }

@@ -41,12 +41,16 @@ using lattice_run::TableWalk;
 
 using lattice::LatticeScene;
 
-// Reflections stepped on the grid before building piece tables. The tables
-// cost about 10 microseconds a mirror and repay it only after some 60 to 600
-// reflections a mirror (bench/RESULTS.md: 10^3 and 10^5 mirrors), so the
-// switch waits longer in bigger scenes.
+// Reflections stepped on the grid before building piece tables. This is
+// the ski-rental choice: rent (step on the grid) until the rent paid equals
+// the price (the tables' build), then buy; no run then costs more than about
+// twice what it would with the better choice known in advance. The build
+// costs 2-3 microseconds a mirror and saves some 140 ns a reflection
+// (random boxes of 10^3 to 10^5 mirrors, bench/RESULTS.md, sixteenth pass),
+// so it repays itself after 16 to 22 reflections a mirror on that machine;
+// 32 leaves room for one that builds up to twice as slowly.
 std::uint64_t grid_phase(std::size_t elements) {
-    return std::max<std::uint64_t>(std::uint64_t{1} << 14, 64 * std::uint64_t{elements});
+    return std::max<std::uint64_t>(std::uint64_t{1} << 14, 32 * std::uint64_t{elements});
 }
 
 // The reflections that cost about as much as `reflections` on integers of
