@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "orthoray/scene.hpp"
+#include "usage_error.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -18,12 +19,6 @@ namespace orthoray::cli {
 enum Exit : int { yes = 0, no = 1, bad_input = 2, limit = 3, internal_error = 4, write_failed = 5 };
 
 using Command = std::function<int()>;
-
-// A problem with the command line itself (not with an input file): reported
-// as `orthoray: ...` with exit status 2.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 Command add_solve(CLI::App& app);
 Command add_verify(CLI::App& app);

@@ -1,6 +1,6 @@
 #include "output_file.hpp"
 
-#include "commands.hpp"
+#include "usage_error.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -132,9 +132,12 @@ OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& 
         // one file system and is atomic; its name says what it is, should a
         // killed run leave it behind.
         const std::filesystem::path target_path(path);
-        std::string pattern = (target_path.parent_path() /
-                               ("." + target_path.filename().string() + ".partial-XXXXXX"))
-                                  .string();
+        // Appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict)
+        // on "." + name + suffix when this file is compiled on its own.
+        std::string name = ".";
+        name += target_path.filename().string();
+        name += ".partial-XXXXXX";
+        std::string pattern = (target_path.parent_path() / name).string();
         fd = ::mkstemp(pattern.data());
         if (fd < 0) cannot_create(errno);
         temporary_ = pattern;

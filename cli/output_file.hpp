@@ -1,8 +1,10 @@
-// Every file the command line writes goes through OutputFile: the bytes go
-// to a temporary file beside the target, every write and the close are
-// checked, and only a complete file is renamed over the target, so a reader
-// never sees a torn file, whatever kills the process (docs/limits.md).
+// Every file the command line writes, and every certificate the Python
+// module writes, goes through OutputFile: the bytes go to a temporary file
+// beside the target, every write and the close are checked, and only a complete file is renamed
+// over the target, so a reader never sees a torn file, whatever kills the process (docs/limits.md).
 #pragma once
+
+#include "usage_error.hpp"
 
 #include <memory>
 #include <ostream>

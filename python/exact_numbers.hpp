@@ -1,6 +1,7 @@
 // Exact numbers across the Python boundary: orthoray's integers become
-// Python ints and its rationals fractions.Fraction, through their decimal
-// text, so nothing is rounded however large; Python ints, Fractions and
+// Python ints and its rationals fractions.Fraction, through hexadecimal
+// text (Python caps decimal conversions at 4300 digits), so nothing is
+// rounded or refused however large; Python ints, Fractions and
 // strings in the .scene number syntax come in. Floats are refused: a
 // decision must not depend on a binary rounding the user did not see.
 #pragma once

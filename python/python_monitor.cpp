@@ -18,8 +18,7 @@ std::optional<Limit> PythonMonitor::poll(std::uint64_t) {
     next_check_ = now + std::chrono::milliseconds(10);
     pybind11::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) {
-        // The handler raised (KeyboardInterrupt): keep it for the caller.
-        interrupted_ = true;
+        interrupt_.emplace(); // takes the handler's exception
         return Limit::interrupt;
     }
     return std::nullopt;

@@ -91,6 +91,9 @@ Numbers are exact: pass ints, fractions.Fraction or strings like '7/2'.)")
         .def_static(
             "load",
             [](const std::string& path, const std::string& format) {
+                if (format != "auto" && format != "json" && format != "scene" && format != "grid")
+                    throw py::value_error("format: found '" + format +
+                                          "', expected auto, scene, json or grid");
                 const SceneFormat f = format == "json"    ? SceneFormat::json
                                       : format == "scene" ? SceneFormat::text
                                       : format == "grid"  ? SceneFormat::grid

@@ -1,12 +1,15 @@
 // orthoray.solve and orthoray.verify, and the Answer they return: the same
 // fields as `orthoray solve --json` (the library's answer_json, read back as
 // a dict, so the two front ends cannot differ), exact integers as Python
-// ints. Solving releases the GIL; Ctrl-C stops the run as a limit and then
-// raises KeyboardInterrupt carrying the partial answer.
+// ints. Solving releases the GIL; a signal whose handler raises (Ctrl-C's
+// KeyboardInterrupt, or the caller's own) stops the run as a limit, and
+// the exception is raised then, carrying the partial answer.
 #include "bindings.hpp"
 #include "exact_numbers.hpp"
 #include "python_monitor.hpp"
 #include "solved_scene.hpp"
+
+#include "output_file.hpp"
 
 #include "orthoray/answer_json.hpp"
 #include "orthoray/certificate.hpp"
@@ -16,7 +19,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace orthoray::python {
@@ -30,31 +32,41 @@ Engine engine_from(const std::string& name) {
     return it->second;
 }
 
-// Writes the certificate to `path` through a temporary file renamed into
-// place, so a reader never sees half of one.
+// Writes the certificate as the command line writes every file
+// (cli/output_file.hpp): through a temporary file of a name of its own
+// beside the target, renamed into place once complete, so a reader never
+// sees half of one, however many writers race; a device or a FIFO is
+// written in place. A path refused before any work is a ValueError, a
+// write that fails an OSError.
 class CertificateFile {
 public:
     CertificateFile(const std::string& path, const Scene& scene, CertificateFormat format)
-        : path_(path), temporary_(path + ".partial"), out_(temporary_),
-          writer_(out_, scene, format) {
-        if (!out_) throw py::value_error("certificate: cannot write '" + temporary_ + "'");
-    }
-    ~CertificateFile() {
-        if (!committed_) std::remove(temporary_.c_str());
-    }
+        : out_(open(path)), writer_(out_->stream(), scene, format) {}
     CertificateWriter& writer() { return writer_; }
     void commit() {
-        out_.close();
-        if (!out_ || std::rename(temporary_.c_str(), path_.c_str()) != 0)
-            throw py::value_error("certificate: cannot write '" + path_ + "'");
-        committed_ = true;
+        try {
+            out_->commit();
+        } catch (const cli::WriteError& e) {
+            raise_write_error(e);
+        }
+    }
+    // With the GIL held.
+    [[noreturn]] static void raise_write_error(const cli::WriteError& e) {
+        PyErr_SetString(PyExc_OSError, e.what());
+        throw py::error_already_set();
     }
 
 private:
-    std::string path_, temporary_;
-    std::ofstream out_;
+    static std::unique_ptr<cli::OutputFile> open(const std::string& path) {
+        try {
+            return std::make_unique<cli::OutputFile>(path, std::vector<std::string>{},
+                                                     "certificate");
+        } catch (const cli::UsageError& e) {
+            throw py::value_error(e.what());
+        }
+    }
+    std::unique_ptr<cli::OutputFile> out_;
     CertificateWriter writer_;
-    bool committed_ = false;
 };
 
 // `scene` is a copy: the run goes on without the GIL, while another Python
@@ -78,6 +90,8 @@ SolvedScene solve_scene(Scene scene, const std::string& engine,
     }
     PythonMonitor monitor(timeout);
     options.monitor = &monitor;
+    if (format != "text" && format != "jsonl")
+        throw py::value_error("certificate_format: found '" + format + "', expected text or jsonl");
     std::optional<CertificateFile> file;
     if (certificate) {
         if (options.engine == Engine::graph)
@@ -88,10 +102,12 @@ SolvedScene solve_scene(Scene scene, const std::string& engine,
     }
     const auto begin = std::chrono::steady_clock::now();
     Answer answer;
-    {
+    try {
         py::gil_scoped_release released;
         answer = solve(scene, options);
         if (file) file->writer().finish(answer);
+    } catch (const cli::WriteError& e) { // the GIL is back: `released` is gone
+        CertificateFile::raise_write_error(e);
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -101,13 +117,21 @@ SolvedScene solve_scene(Scene scene, const std::string& engine,
         engine,  max_steps,
         timeout, '{' + answer_json_members(answer, engine_name(answer, engine), seconds) + '}'};
     if (monitor.interrupted()) {
-        PyErr_Clear();
-        py::object error = py::module_::import("builtins")
-                               .attr("KeyboardInterrupt")("orthoray: interrupted; the partial "
-                                                          "answer is this exception's .answer");
-        error.attr("answer") = py::cast(solved);
-        PyErr_SetObject(PyExc_KeyboardInterrupt, error.ptr());
-        throw py::error_already_set();
+        // Ctrl-C: a KeyboardInterrupt that says where the answer is.
+        if (monitor.interrupt().matches(PyExc_KeyboardInterrupt)) {
+            py::object error = py::module_::import("builtins")
+                                   .attr("KeyboardInterrupt")("orthoray: interrupted; the partial "
+                                                              "answer is this exception's .answer");
+            error.attr("answer") = py::cast(solved);
+            PyErr_SetObject(PyExc_KeyboardInterrupt, error.ptr());
+            throw py::error_already_set();
+        }
+        // Another handler's exception goes through as it was raised,
+        // carrying the partial answer too where it can hold an attribute.
+        if (PyObject_SetAttrString(monitor.interrupt().value().ptr(), "answer",
+                                   py::cast(solved).ptr()) != 0)
+            PyErr_Clear();
+        monitor.raise_if_interrupted();
     }
     return solved;
 }

@@ -79,7 +79,11 @@ py::dict SolvedScene::fields() const {
     // Looked up once and never released: a static py::object would be
     // destroyed after the interpreter, at exit.
     static const py::object& loads = *new py::object(py::module_::import("json").attr("loads"));
-    return loads(json);
+    // Integers through GMP and hex, not int(): Python refuses decimal text
+    // of more than 4300 digits, and a count of reflections can be longer.
+    static const py::object& exact_int = *new py::object(
+        py::cpp_function([](const std::string& digits) { return to_python(Integer(digits, 10)); }));
+    return loads(json, py::arg("parse_int") = exact_int);
 }
 
 std::string SolvedScene::svg() const {

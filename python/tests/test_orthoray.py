@@ -208,6 +208,75 @@ def test_ints_beyond_python_decimal_conversion_limit():
     assert scene.elements[0]["offset"] == big
     answer = orthoray.solve(scene)
     assert (answer.answer, answer.reflections) == ("yes", 0)
+    # And out: m + n - 2 reflections to the far corner of an m x n box with
+    # m, n odd and coprime, a count of 4301 digits.
+    m = 10**4300 + 1
+    answer = orthoray.solve(orthoray.generate_box([m, m + 2]))
+    assert (answer.answer, answer.reflections) == ("yes", 2 * m)
+    assert answer.as_dict()["reflections"] == 2 * m
+
+
+def test_a_signal_handlers_own_exception_goes_through():
+    # Only Ctrl-C becomes KeyboardInterrupt; a handler of the caller's
+    # (a timeout of theirs, sys.exit on SIGTERM) raises its own exception,
+    # which carries the partial answer too.
+    class Expired(Exception):
+        pass
+
+    def expire(*_):
+        raise Expired("the caller's own timeout")
+
+    scene = orthoray.generate_box([10**30 + 7, 10**30 + 9])
+    previous = signal.signal(signal.SIGALRM, expire)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        with pytest.raises(Expired) as caught:
+            orthoray.solve(scene, engine="lattice")
+        assert caught.value.answer.limit == "interrupt"
+        assert caught.value.answer.reflections > 0
+        signal.signal(signal.SIGALRM, lambda *_: exit(7))
+        signal.setitimer(signal.ITIMER_REAL, 0.3)
+        with pytest.raises(SystemExit) as stopped:
+            orthoray.solve(scene, engine="lattice")
+        assert stopped.value.code == 7
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def test_certificates_written_at_once_to_one_path_stay_whole(tmp_path):
+    # Each writer has a temporary file of its own: the path ends up holding
+    # one whole certificate, the last renamed, never a mix of two.
+    scenes = [orthoray.generate_box([10**5 + 1, 10**5 + 3]),
+              orthoray.generate_box([10**5 + 3, 10**5 + 7])]
+    cert = tmp_path / "shared.cert"
+    errors = []
+
+    def write(scene):
+        try:
+            orthoray.solve(scene, engine="lattice", certificate=str(cert))
+        except Exception as error:  # noqa: BLE001 - reported below
+            errors.append(error)
+
+    threads = [threading.Thread(target=write, args=(s,)) for s in scenes]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors
+    assert [orthoray.verify(s, str(cert))[0] for s in scenes].count(True) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["shared.cert"]
+
+
+def test_misspelled_formats_are_refused(tmp_path):
+    box = orthoray.generate_box([3, 5])
+    with pytest.raises(ValueError, match="certificate_format: found 'json'"):
+        orthoray.solve(box, certificate=str(tmp_path / "c"), certificate_format="json")
+    with pytest.raises(ValueError, match="format: found 'jason'"):
+        orthoray.Scene.load(str(SOURCE / "instances" / "2d" / "box-corner-3x5.scene"),
+                            format="jason")
+    with pytest.raises(ValueError, match="cannot write certificate"):
+        orthoray.solve(box, certificate=str(tmp_path / "missing" / "c"))
 
 
 def test_malformed_numbers_and_options_are_value_errors():
