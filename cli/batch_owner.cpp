@@ -1,4 +1,5 @@
 #include "batch_owner.hpp"
+#include "output_file.hpp"
 
 #include <cstdio>
 #include <unistd.h>
@@ -6,7 +7,15 @@
 namespace orthoray::cli {
 namespace {
 
-std::unique_ptr<ResultsLog> open_results(const BatchArgs& args) {
+std::unique_ptr<ResultsLog> open_results(const BatchArgs& args, const InstanceList& instances) {
+    // The results file is emptied (or, with --resume, cut) when opened: it
+    // must not be one of the instances or manifests, nor an instance found
+    // in a directory or listed in a manifest.
+    if (!args.output.empty() && !instances.generated()) {
+        std::vector<std::string> inputs = args.inputs;
+        for (std::size_t i = 0; i < instances.size(); ++i) inputs.push_back(instances.name(i));
+        refuse_input_as_output(args.output, inputs, "the results");
+    }
     auto log = args.output.empty() ? std::make_unique<ResultsLog>()
                                    : std::make_unique<ResultsLog>(args.output, args.resume);
     if (log->dropped_bytes() > 0)
@@ -20,7 +29,7 @@ std::unique_ptr<ResultsLog> open_results(const BatchArgs& args) {
 } // namespace
 
 BatchOwner::BatchOwner(const BatchArgs& args, unsigned jobs)
-    : instances(list_instances(args)), log(open_results(args)),
+    : instances(list_instances(args)), log(open_results(args, instances)),
       progress(!args.quiet && isatty(STDERR_FILENO)), decider_(args),
       done_([this](const std::string& key) { return log->done(key); }),
       begin_(std::chrono::steady_clock::now()),

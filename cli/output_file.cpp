@@ -106,20 +106,27 @@ private:
     }
 };
 
+void refuse_input_as_output(const std::string& path, const std::vector<std::string>& inputs,
+                            const std::string& what) {
+    struct stat target {};
+    if (::stat(path.c_str(), &target) != 0) return; // a new file overwrites nothing
+    for (const std::string& input : inputs) {
+        struct stat in {};
+        if (::stat(input.c_str(), &in) == 0 && same_file(in, target))
+            throw UsageError("found " + what + " '" + path + "' naming the input '" + input +
+                             "', expected another file (it would be overwritten)");
+    }
+}
+
 OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& inputs,
                        const std::string& what)
     : path_(path), what_(what + " '" + path + "'") {
     if (path.empty())
         throw UsageError("found an empty file name for " + what + ", expected a file name");
+    refuse_input_as_output(path, inputs, what);
     struct stat target {};
     const bool exists = ::stat(path.c_str(), &target) == 0;
     if (exists) {
-        for (const std::string& input : inputs) {
-            struct stat in {};
-            if (::stat(input.c_str(), &in) == 0 && same_file(in, target))
-                throw UsageError("found " + what_ + " naming the input '" + input +
-                                 "', expected another file (it would be overwritten)");
-        }
         if (S_ISDIR(target.st_mode))
             throw UsageError("found a directory for " + what_ + ", expected a file name");
     }

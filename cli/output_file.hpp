@@ -20,6 +20,12 @@ struct WriteError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Refuses (UsageError) an existing `path` that names the same file as one
+// of `inputs` (hard links and other spellings included): writing it would
+// destroy an input. `what` names the output in the message.
+void refuse_input_as_output(const std::string& path, const std::vector<std::string>& inputs,
+                            const std::string& what);
+
 class OutputFile {
 public:
     // Refuses (UsageError) an empty path and a path that names the same

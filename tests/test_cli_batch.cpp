@@ -391,6 +391,36 @@ TEST_CASE("batch refuses what it cannot do, before deciding anything", "[batch][
     CHECK(run_cli("batch " + scenes + " --jobs 0").status == 2);
 }
 
+TEST_CASE("batch refuses a results file that is one of its inputs, and leaves it whole",
+          "[batch][cli]") {
+    // The results file is emptied when opened: an instance, a manifest, an
+    // instance found in a directory or a hard link to one must be refused
+    // before that, as every other command refuses its input as output.
+    const TempDir dir;
+    const std::string text = slurp(instance("2d/box-corner-3x5.scene"));
+    std::filesystem::create_directory(dir.path("scenes"));
+    const std::string scene = dir.write("scenes/a.scene", text);
+    const std::string manifest = dir.write("list.txt", scene + "\n");
+    const std::string link = dir.path("link.jsonl");
+    std::filesystem::create_hard_link(scene, link);
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {quote(scene), scene},
+        {quote(manifest), manifest},
+        {quote(dir.path("scenes")), scene},
+        {quote(manifest), link},
+        {quote(scene) + " --resume", scene}};
+    for (const auto& [inputs, output] : cases) {
+        INFO(inputs << " -o " << output);
+        const CliResult run = run_cli("batch " + inputs + " -o " + quote(output));
+        CHECK(run.status == 2);
+        CHECK(run.out.empty());
+        CHECK(run.err.find("naming the input") != std::string::npos);
+        CHECK(run.err.find("expected another file (it would be overwritten)") != std::string::npos);
+    }
+    CHECK(slurp(scene) == text);
+    CHECK(slurp(manifest) == scene + "\n");
+}
+
 TEST_CASE("batch shows done, rate, ETA and failures on a terminal, and erases the line",
           "[batch][cli][slow]") {
     const TempDir dir;
