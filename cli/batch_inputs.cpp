@@ -2,10 +2,10 @@
 
 #include "commands.hpp"
 #include "orthoray/parse.hpp"
+#include "run_monitor.hpp"
 
 #include <algorithm>
 #include <filesystem>
-#include <iostream>
 #include <sstream>
 #include <system_error>
 #include <unordered_map>
@@ -54,10 +54,17 @@ bool is_level_file(const std::string& path) {
 }
 
 std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
+    // A manifest may be standard input or a FIFO that waits for its writer,
+    // and a directory may be large: SIGINT and SIGTERM stop the listing as
+    // an interrupted read (ReadInterrupted, exit 3), before the results file
+    // is touched. read_file turns a read cut by the signal into that too.
+    const InterruptGuard interrupts;
     std::vector<std::string> out;
     for (const std::string& input : inputs) {
+        if (InterruptGuard::requested()) throw ReadInterrupted(input);
         if (input == "-") {
-            read_manifest(std::cin, out);
+            std::istringstream in(read_file("-"));
+            read_manifest(in, out);
             continue;
         }
         std::error_code error;
@@ -83,6 +90,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
             read_manifest(in, out);
         }
     }
+    if (InterruptGuard::requested()) throw ReadInterrupted(inputs.back());
     return out;
 }
 

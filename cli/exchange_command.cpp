@@ -4,6 +4,7 @@
 #include "orthoray/exchange.hpp"
 #include "orthoray/parse.hpp"
 #include "scene_format_option.hpp"
+#include "stop_at_once.hpp"
 
 #include <iostream>
 #include <memory>
@@ -30,6 +31,9 @@ Command add_exchange(CLI::App& app) {
     cmd->add_flag("--json", *json, "one JSON object instead of the text form");
     add_scene_format_option(cmd, *format);
     return [file, format, json] {
+        // The exchange is printed whole at the end: SIGINT and SIGTERM end the
+        // command at once with exit 3 (stop_at_once.hpp), nothing printed.
+        stop_at_once(std::nullopt);
         const Scene scene = load_scene(*file, scene_format_named(*format));
         const std::optional<IntervalExchange> exchange = exchange_of(scene);
         if (!exchange)

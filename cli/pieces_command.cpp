@@ -3,6 +3,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/pieces.hpp"
 #include "scene_format_option.hpp"
+#include "stop_at_once.hpp"
 
 #include <iostream>
 #include <memory>
@@ -27,6 +28,9 @@ Command add_pieces(CLI::App& app) {
                   "axis-parallel scenes only");
     add_scene_format_option(cmd, *format);
     return [file, format, json] {
+        // The tables are printed whole at the end: SIGINT and SIGTERM end the
+        // command at once with exit 3 (stop_at_once.hpp), nothing printed.
+        stop_at_once(std::nullopt);
         const Scene scene = load_scene(*file, scene_format_named(*format));
         if (*json && scene.has_diagonal())
             throw UsageError("found --json for a scene with diagonal elements, expected an "

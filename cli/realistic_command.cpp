@@ -4,6 +4,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
 #include "output_file.hpp"
+#include "stop_at_once.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -51,6 +52,10 @@ RealisticModel model_of(const RealisticArgs& args) {
 }
 
 int run(const RealisticArgs& args) {
+    // Files are renamed into place whole and the answer printed at the end:
+    // SIGINT and SIGTERM end the command at once with exit 3
+    // (stop_at_once.hpp), a file being written left as it was.
+    stop_at_once(std::nullopt);
     const RealisticModel model = model_of(args);
     const auto begin = std::chrono::steady_clock::now();
     const RealisticAnswer answer = solve_realistic(model);

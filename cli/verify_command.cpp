@@ -4,6 +4,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
 #include "scene_format_option.hpp"
+#include "stop_at_once.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,7 @@ namespace {
 struct VerifyArgs {
     std::string file, certificate, format;
     bool json = false;
+    double timeout = 0;
 };
 
 // The verdict as text ("valid: hit, 6 reflections") or one JSON object
@@ -34,7 +36,12 @@ bool is_realistic_model(const std::string& path) {
            path.compare(path.size() - ending.size(), ending.size(), ending) == 0;
 }
 
-int run(const VerifyArgs& args) {
+int run(const VerifyArgs& args, bool timed) {
+    // The verdict is printed at the end. A check takes time in proportion
+    // to the reflections its stretches and witnesses hold, which nothing in
+    // a certificate bounds: SIGINT, SIGTERM and --timeout end it at once
+    // with exit 3 (stop_at_once.hpp), no verdict printed.
+    stop_at_once(timed ? std::optional<double>(args.timeout) : std::nullopt);
     if (is_realistic_model(args.file)) {
         const RealisticModel model = read_realistic(read_file(args.file), args.file);
         const std::unique_ptr<std::istream> cert = open_file_stream(args.certificate);
@@ -59,7 +66,8 @@ Command add_verify(CLI::App& app) {
                   "  orthoray verify instances/2d/box-corner-3x5.scene path.cert\n"
                   "  valid: hit, 6 reflections\n\n"
                   "Exit status: 0 valid, 1 invalid (the first failing step is printed),\n"
-                  "2 unreadable or malformed scene or certificate.");
+                  "2 unreadable or malformed scene or certificate, 3 stopped (--timeout,\n"
+                  "SIGINT or SIGTERM) before a verdict.");
     cmd->add_option("FILE", args->file,
                     "the scene (.scene text or JSON), or a realistic model (.realistic, checked "
                     "against 'orthoray realistic --certificate')")
@@ -68,7 +76,8 @@ Command add_verify(CLI::App& app) {
     add_scene_format_option(cmd, args->format);
     cmd->add_flag("--json", args->json,
                   "print one JSON object: valid (true or false) and message (the text verdict)");
-    return [args] { return run(*args); };
+    const CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the check");
+    return [args, timeout] { return run(*args, timeout->count() > 0); };
 }
 
 } // namespace orthoray::cli

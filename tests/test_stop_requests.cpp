@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <vector>
@@ -391,4 +392,61 @@ TEST_CASE("render, bounds and convert stop at once on a signal or --timeout, wri
     CHECK(run_cli("convert " + quote(big) + " " + quote(dir.path("big.json")) + " --timeout 0.05")
               .status == 3);
     CHECK_FALSE(fs::exists(dir.path("big.json")));
+}
+
+TEST_CASE("verify, pieces, exchange, realistic and batch stop on a signal while input waits",
+          "[stop_requests][cli]") {
+    // Each reads a FIFO that never gets a writer (verify: as its
+    // certificate; batch: as a manifest): SIGINT or SIGTERM ends it with
+    // exit 3 and one line, not a death by the signal.
+    const TempDir dir;
+    const std::string scene = source_path("instances/2d/box-corner-3x5.scene");
+    const std::string fifo = dir.path("waits");
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::vector<std::pair<std::vector<std::string>, std::string>> commands{
+        {{"verify", scene, fifo}, "orthoray: stopped: interrupted\n"},
+        {{"pieces", fifo}, "orthoray: stopped: interrupted\n"},
+        {{"exchange", fifo}, "orthoray: stopped: interrupted\n"},
+        {{"realistic", fifo}, "orthoray: stopped: interrupted\n"},
+        {{"batch", fifo, "-o", dir.path("r.jsonl")},
+         "orthoray: interrupted while reading '" + fifo + "'\n"}};
+    for (const auto& [args, message] : commands)
+        for (const int signal : {SIGINT, SIGTERM}) {
+            INFO(args[0] << ", signal " << signal);
+            const pid_t child = spawn_cli(args, dir.path("out"), dir.path("err"));
+            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            REQUIRE(kill(child, signal) == 0);
+            const std::optional<int> status = wait_at_most(child, 30);
+            REQUIRE(status);
+            CHECK(*status == 3);
+            CHECK(slurp(dir.path("out")).empty());
+            CHECK(slurp(dir.path("err")) == message);
+        }
+    CHECK_FALSE(fs::exists(dir.path("r.jsonl")));
+}
+
+TEST_CASE("verify --timeout ends a check whose stretch is long", "[stop_requests][cli]") {
+    // A true but costly branch line: a state inside a closed 2^40 box,
+    // whose stretch the checker walks for some 2^41 reflections.
+    const TempDir dir;
+    const std::string side = "1099511627776", wide = "1099511627777";
+    const std::string scene = dir.write(
+        "box.scene", "dim 2\nmirror x 0 y 0 " + side + "\nmirror x " + wide + " y 0 " + side +
+                         "\nmirror y 0 x 0 " + wide + "\nmirror y " + side + " x 0 " + wide +
+                         "\nsplitter x -5 y -10 -8\nray -10 -9 1 0\ntarget -20 -9\n"
+                         "target 0 -9\n");
+    const std::string certificate = dir.path("c.cert");
+    REQUIRE(run_cli("solve " + quote(scene) + " --certificate " + quote(certificate)).status == 0);
+    CHECK(run_cli("verify " + quote(scene) + " " + quote(certificate) + " --timeout 5").status ==
+          0);
+    std::string text = slurp(certificate);
+    const std::size_t states = text.find("states 3");
+    REQUIRE(states != std::string::npos);
+    text.replace(states, 8, "states 4");
+    text.insert(text.find("branch"), "branch 1/2 0 1 1 ray 1 reflections 9\n");
+    const std::string longer = dir.write("longer.cert", text);
+    const auto timed = run_cli("verify " + quote(scene) + " " + quote(longer) + " --timeout 0.3");
+    CHECK(timed.status == 3);
+    CHECK(timed.out.empty());
+    CHECK(timed.err == "orthoray: stopped: --timeout reached\n");
 }
