@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <tuple>
 
 using orthoray::InputError;
 using orthoray::io::JsonValue;
@@ -52,5 +53,27 @@ TEST_CASE("parse_json places a syntax error at its token", "[json]") {
     } catch (const InputError& error) {
         CHECK(error.line() == 4);
         CHECK(error.column() == 3);
+    }
+}
+
+TEST_CASE("parse_json refuses a NUL byte where it stands, not as the end of the text", "[json]") {
+    // nlohmann's lexer ends the input at a NUL: a valid document followed
+    // by a NUL and garbage would read as whole, and a NUL inside one would
+    // be reported as an early end.
+    using namespace std::string_literals;
+    for (const auto& [text, line, column] :
+         {std::tuple{"{\"a\": 1}\0 not json {{"s, 5, 9}, std::tuple{"[1,\n 2\0, 3]"s, 6, 3},
+          std::tuple{"\0"s, 5, 1}}) {
+        INFO(line << ":" << column);
+        try {
+            parse_json(text, "t.json", 5);
+            FAIL("parsed");
+        } catch (const InputError& error) {
+            CHECK(error.line() == line);
+            CHECK(error.column() == column);
+            CHECK(std::string(error.what()) == "t.json:" + std::to_string(line) + ":" +
+                                                   std::to_string(column) +
+                                                   ": found byte 0x00, expected JSON text");
+        }
     }
 }

@@ -270,6 +270,20 @@ const JsonValue* JsonValue::find(std::string_view key) const {
 }
 
 JsonValue parse_json(std::string_view text, const std::string& file, int first_line) {
+    // nlohmann's lexer takes a NUL byte for the end of the input, so text
+    // after one would be ignored, a document that goes on after it read as
+    // whole. A NUL is never JSON: refuse it where it stands.
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        const std::string_view before = text.substr(0, nul);
+        const std::size_t breaks =
+            static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
+        const std::size_t line_start = breaks == 0 ? 0 : before.rfind('\n') + 1;
+        throw InputError(file,
+                         static_cast<int>(std::min<std::size_t>(
+                             static_cast<std::size_t>(first_line) + breaks, INT_MAX)),
+                         static_cast<int>(std::min<std::size_t>(nul - line_start + 1, INT_MAX)),
+                         "found byte 0x00, expected JSON text");
+    }
     TreeBuilder builder(text, file, first_line);
     const char* begin = text.data();
     const char* end = begin + text.size();
