@@ -7,6 +7,7 @@
 #include "batch_mpi.hpp"
 #include "batch_owner.hpp"
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "run_monitor.hpp"
 #include "scene_format_option.hpp"
 #include "solve_choices.hpp"
@@ -98,15 +99,18 @@ Command add_batch(CLI::App& app) {
     cmd->add_option("--jobs,-j", args->jobs,
                     "threads (default: every core; under --mpi, one a rank)")
         ->check(CLI::Range(1u, 4096u));
-    CLI::Option* output = cmd->add_option(
-        "-o,--output", args->output, "append the results to this file (default: standard output)");
+    CLI::Option* output =
+        cmd->add_option("-o,--output", args->output,
+                        "append the results to this file (default: standard output)")
+            ->check(not_empty("a file name"));
     cmd->add_flag("--resume", args->resume,
                   "keep the results already in the -o file and decide only the instances "
                   "missing there (keyed by path and content hash)")
         ->needs(output);
     cmd->add_option("--certificates", args->certificates,
                     "write each instance's certificate to NAME.HASH.cert in this directory "
-                    "(docs/certificates.md)");
+                    "(docs/certificates.md)")
+        ->check(not_empty("a directory"));
     add_scene_format_option(cmd, args->format);
     add_solve_choices(cmd, args->choices,
                       "let the whole batch grow by at most MB megabytes of address space; an "

@@ -203,7 +203,8 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
         ->required()
         ->check(
             CLI::IsMember({"random", "box", "square", "hallway", "coprime-box", "coprime-cuboid"}));
-    cmd->add_option("-o,--output", args->output, "write the scene to this file (default: stdout)");
+    cmd->add_option("-o,--output", args->output, "write the scene to this file (default: stdout)")
+        ->check(not_empty("a file name"));
     cmd->add_option("--seed", args->seed,
                     "the seed of std::mt19937_64 for random (default 1), 0 to 2^64 - 1; the other "
                     "families are fixed by their parameters and only record it")

@@ -45,4 +45,15 @@ inline CLI::Validator timeout_seconds() {
         "SECONDS");
 }
 
+// A value that must not be empty: a file name, a number. Without this an
+// empty value would read as the option left out (standard output instead
+// of a file, no threshold instead of one), silently.
+inline CLI::Validator not_empty(const std::string& expected) {
+    return CLI::Validator(
+        [expected](const std::string& text) -> std::string {
+            return text.empty() ? "found an empty value, expected " + expected : std::string{};
+        },
+        "");
+}
+
 } // namespace orthoray::cli

@@ -167,7 +167,8 @@ Command add_puzzle_generate(CLI::App& puzzle) {
                     "search nodes for each search on a candidate level: for another\n"
                     "solution, and to count its solutions (default 50000)")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-    cmd->add_option("-o,--output", args->out, "write the level here instead of to stdout");
+    cmd->add_option("-o,--output", args->out, "write the level here instead of to stdout")
+        ->check(not_empty("a file name"));
     cmd->add_flag("--mpi", args->mpi,
                   "spread each search over the ranks of 'mpirun -n P orthoray puzzle generate "
                   "... --mpi': the same level, written by rank 0 (docs/puzzles.md)");

@@ -1,6 +1,7 @@
 // orthoray puzzle scene LEVEL.bff: the level as a scene (docs/puzzles.md), so
 // that `orthoray solve` decides which points a placement lights.
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/puzzle.hpp"
 #include "output_file.hpp"
@@ -55,7 +56,8 @@ Command add_puzzle_scene(CLI::App& puzzle) {
     cmd->add_option("--placement", args->placement,
                     "a solved grid for this level (.bff, as 'puzzle solve -o' writes it): the "
                     "level's fixed cells, and exactly its blocks on open cells");
-    cmd->add_option("-o,--output", args->out, "write the scene here instead of to stdout");
+    cmd->add_option("-o,--output", args->out, "write the scene here instead of to stdout")
+        ->check(not_empty("a file name"));
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the translation");
     return [args, timeout] { return run(*args, timeout); };
 }

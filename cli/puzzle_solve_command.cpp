@@ -220,11 +220,13 @@ Command add_puzzle_solve(CLI::App& puzzle) {
         "print one JSON object: answer (solved, unsolvable, unknown), grid (rows), points, "
         "solutions (with --all), nodes, jobs, seconds");
     cmd->add_option("-o,--output", args->out,
-                    "write the solved level here (.bff, the blocks placed in its grid)");
+                    "write the solved level here (.bff, the blocks placed in its grid)")
+        ->check(not_empty("a file name"));
     cmd->add_option("--render", args->picture,
                     "draw the solved level here (SVG, or the interactive viewer with the "
                     "cell grid when the name ends in .html): every laser's branches, each "
-                    "point gold when lit (as 'orthoray render' draws scenes)");
+                    "point gold when lit (as 'orthoray render' draws scenes)")
+        ->check(not_empty("a file name"));
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
         ->check(CLI::Range(1u, 1024u));
     cmd->add_flag("--mpi", args->mpi,

@@ -1,6 +1,7 @@
 // orthoray realistic FILE: the intensity question of a realistic model
 // (docs/realistic-scenes.md), decided by the pair dynamic program.
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
 #include "output_file.hpp"
@@ -120,14 +121,17 @@ Command add_realistic(CLI::App& app) {
                   "derived from its lattice states (docs/realistic-scenes.md, \"From mirror "
                   "scenes\"); objects S (the ray), R (the target) and e1, e2, ... (the elements)");
     cmd->add_option("--min-intensity", args->min_intensity,
-                    "with --from-scene: eps, a natural number (default 0)");
+                    "with --from-scene: eps, a natural number (default 0)")
+        ->check(not_empty("a natural number"));
     cmd->add_option("--target", args->target,
                     "with --from-scene: which target is the receiver (default 1)");
     cmd->add_option("--write-model", args->write_model,
                     "with --from-scene: write the derived model to this file (then --certificate "
-                    "can be checked against it with 'orthoray verify')");
+                    "can be checked against it with 'orthoray verify')")
+        ->check(not_empty("a file name"));
     cmd->add_option("--certificate", args->certificate,
-                    "write the path and the closed pair bounds to this file");
+                    "write the path and the closed pair bounds to this file")
+        ->check(not_empty("a file name"));
     return [args] { return run(*args); };
 }
 

@@ -1,5 +1,6 @@
 // orthoray render FILE: draw the scene and its trajectory as SVG or PNG.
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/render.hpp"
@@ -354,13 +355,16 @@ Command add_render(CLI::App& app) {
     cmd->add_option("-o,--output", args->out,
                     "the picture to write: NAME.svg, NAME.png, or NAME.html for the interactive "
                     "viewer (default: FILE's name with .svg, in the current directory, unless "
-                    "--html is given)");
+                    "--html is given)")
+        ->check(not_empty("a file name"));
     cmd->add_option("--html", args->html,
                     "write the interactive viewer here: one self-contained HTML page with a step "
                     "slider, play/pause, zoom, pan, 3D rotation and the exact coordinates of "
-                    "each point on hover (the first 5000 segments)");
+                    "each point on hover (the first 5000 segments)")
+        ->check(not_empty("a file name"));
     cmd->add_option("--certificate", args->certificate,
-                    "draw the path this certificate lists (text or jsonl) instead of solving");
+                    "draw the path this certificate lists (text or jsonl) instead of solving")
+        ->check(not_empty("a file name"));
     CLI::Option* steps =
         cmd->add_option("--steps", args->steps,
                         "draw the first N segments (default 1000): the path's first N "

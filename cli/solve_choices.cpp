@@ -100,7 +100,8 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
                     "EPS, a natural number: is each target reached by a branch with intensity "
                     "greater than EPS? Rays carry intensities, elements reflectances and "
                     "transmittances, floored after every event (docs/intensity.md); every ray "
-                    "needs 'intensity N'");
+                    "needs 'intensity N'")
+        ->check(not_empty("a natural number"));
 }
 
 } // namespace orthoray::cli

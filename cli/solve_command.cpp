@@ -1,5 +1,6 @@
 // orthoray solve FILE: decide an instance and print the answer.
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "orthoray/answer_json.hpp"
 #include "orthoray/certificate.hpp"
 #include "orthoray/parse.hpp"
@@ -212,7 +213,8 @@ Command add_solve(CLI::App& app) {
     CLI::Option* certificate =
         cmd->add_option("--certificate", args->certificate,
                         "stream the certificate (docs/certificates.md) to this file; check it "
-                        "with 'orthoray verify'");
+                        "with 'orthoray verify'")
+            ->check(not_empty("a file name"));
     // A format without a file would be silently ignored.
     cmd->add_option("--certificate-format", args->certificate_format,
                     "text (default) or jsonl: JSON Lines, one JSON object a line, for other "

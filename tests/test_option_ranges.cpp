@@ -1,4 +1,4 @@
-// Numeric options reject what they cannot mean with one message and exit 2,
+// Options reject what they cannot mean with one message and exit 2,
 // instead of clamping, wrapping or reading nan as "no limit".
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
@@ -59,4 +59,30 @@ TEST_CASE("the options --max-steps and --seed take whole numbers up to 2^64 - 1"
     REQUIRE(padded.status == 0);
     CHECK(padded.out.substr(padded.out.find("\ndim")) == plain.out.substr(plain.out.find("\ndim")));
     CHECK(run_cli("solve " + quote(box) + " --max-steps 18446744073709551615").status == 0);
+}
+
+TEST_CASE("an empty value is refused, not read as the option left out", "[option_ranges][cli]") {
+    // Else `-o ''` wrote to standard output (or render's default file), and
+    // `--min-intensity ''` answered the plain question.
+    const std::string level = quote(instance("puzzles/opaque-5x5.bff"));
+    const std::string model = quote(instance("realistic/greedy-fails.realistic"));
+    const std::string scene = quote(box);
+    for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+             {"solve " + scene + " --min-intensity ''", "--min-intensity"},
+             {"solve " + scene + " --certificate ''", "--certificate"},
+             {"render " + scene + " -o ''", "--output"},
+             {"render " + scene + " --html ''", "--html"},
+             {"render " + scene + " --certificate ''", "--certificate"},
+             {"batch " + scene + " -o ''", "--output"},
+             {"batch " + scene + " --certificates ''", "--certificates"},
+             {"generate box --sides 3,5 -o ''", "--output"},
+             {"puzzle solve " + level + " -o ''", "--output"},
+             {"puzzle solve " + level + " --render ''", "--render"},
+             {"puzzle scene " + level + " -o ''", "--output"},
+             {"puzzle generate -o ''", "--output"},
+             {"realistic " + model + " --certificate ''", "--certificate"},
+             {"realistic " + scene + " --from-scene --min-intensity ''", "--min-intensity"},
+             {"realistic " + scene + " --from-scene --min-intensity 1 --write-model ''",
+              "--write-model"}})
+        require_rejected(args, option + ": found an empty value, expected ");
 }
