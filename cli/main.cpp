@@ -73,7 +73,16 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e); // --help, --version
+        if (e.get_exit_code() == 0) { // --help, --version: a failed write is still one
+            const int status = app.exit(e);
+            try {
+                finish_standard_output();
+            } catch (const WriteError& error) {
+                std::cerr << "orthoray: " << error.what() << '\n';
+                return write_failed;
+            }
+            return status;
+        }
         std::cerr << "orthoray: " << e.what() << " (see '" << help_command(argc, argv, app)
                   << "')\n";
         return bad_input;

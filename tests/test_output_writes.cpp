@@ -63,7 +63,8 @@ TEST_CASE("standard output on /dev/full or a closed pipe is a failed write, exit
           "[output_writes][cli]") {
     for (const std::string& command : std::vector<std::string>{
              "solve \"" + box + "\"", "verify \"" + box + "\" /dev/null", "pieces \"" + box + "\"",
-             "bounds \"" + box + "\"", "generate random --mirrors 20"}) {
+             "bounds \"" + box + "\"", "generate random --mirrors 20", "--help", "solve --help",
+             "--version"}) {
         CAPTURE(command);
         const ShellResult full = run_shell("$ORTHORAY " + command + " >/dev/full");
         CHECK(full.status == 5);
