@@ -188,6 +188,24 @@ TEST_CASE("tampered realistic certificates are rejected for the reason changed",
     CHECK(tampered("bound B R 20", "bound B R 19") ==
           "invalid: the triple C B R passes on 20, more than the bound of its next pair");
     CHECK_THROWS_AS(check(m, good.substr(0, good.size() - 4)), InputError);
+    // A statement said twice says two things; the file is malformed, not
+    // judged by its last word.
+    for (const std::string line :
+         {"answer yes\n", "best 20\n", "path S C B R\n", "arrivals 100 40 20\n"}) {
+        INFO(line);
+        std::string text = good;
+        const std::size_t at = text.find(line);
+        REQUIRE(at != std::string::npos);
+        text.insert(at, line);
+        try {
+            check(m, text);
+            FAIL("accepted");
+        } catch (const InputError& e) {
+            const std::string keyword = line.substr(0, line.find(' '));
+            CHECK(std::string(e.what()).find("expected one '" + keyword + "' line") !=
+                  std::string::npos);
+        }
+    }
 }
 
 TEST_CASE("realistic models: every malformed line is one located message", "[realistic]") {
@@ -211,6 +229,11 @@ TEST_CASE("realistic models: every malformed line is one located message", "[rea
           "transfer)");
     CHECK(message(head + "triple S A R table 5:1 5:2\n") ==
           "m.realistic:6:24: found '5:2', expected thresholds in increasing order");
+    // A bad threshold or value is pointed at itself, not at its step.
+    CHECK(message(head + "triple S A R table 0:0 x:2\n") ==
+          "m.realistic:6:24: found 'x', expected a natural number");
+    CHECK(message(head + "triple S A R table 0:0 10:x\n") ==
+          "m.realistic:6:27: found 'x', expected a natural number");
     CHECK(message(head + "triple S Q R scale 1\n") ==
           "m.realistic:6:10: found 'Q', expected an object declared by 'object'");
     CHECK(message(head + "pair A R\n") == "m.realistic:6:6: found 'A', expected the source object");

@@ -168,7 +168,9 @@ private:
         const std::size_t colon = token.text.find(':');
         if (colon == std::string_view::npos) fail(token, "a step THRESHOLD:VALUE");
         const Integer threshold = natural({token.text.substr(0, colon), token.column});
-        const Integer value = natural({token.text.substr(colon + 1), token.column});
+        // The value's own column, so that a bad one is pointed at, not the step.
+        const Integer value =
+            natural({token.text.substr(colon + 1), token.column + static_cast<int>(colon) + 1});
         if (!transfer.thresholds.empty() && threshold <= transfer.thresholds.back())
             fail(token, "thresholds in increasing order");
         if (!transfer.values.empty() && value < transfer.values.back())

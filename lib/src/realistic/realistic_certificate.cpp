@@ -83,7 +83,13 @@ private:
 
     void read() {
         std::string text;
-        bool header = false, answer = false, best = false;
+        // Each statement but `bound` once: a repeated one would say two
+        // things, and the last would win unseen.
+        bool header = false, answer = false, best = false, path = false, arrivals = false;
+        auto once = [&](bool& seen, const std::string& line, const std::string& keyword) {
+            if (seen) fail(1, line, "one '" + keyword + "' line");
+            seen = true;
+        };
         while (std::getline(in_, text)) {
             ++line_;
             std::istringstream words(text);
@@ -96,14 +102,16 @@ private:
                     fail(1, text, "'orthoray-realistic-certificate 1'");
                 header = true;
             } else if (w[0] == "answer" && w.size() == 2 && (w[1] == "yes" || w[1] == "no")) {
+                once(answer, text, "answer");
                 yes_ = w[1] == "yes";
-                answer = true;
             } else if (w[0] == "best" && w.size() == 2) {
+                once(best, text, "best");
                 if (w[1] != "none") best_ = natural(w[1]);
-                best = true;
             } else if (w[0] == "path" && w.size() >= 3) {
+                once(path, text, "path");
                 for (std::size_t k = 1; k < w.size(); ++k) path_.push_back(object(w[k]));
             } else if (w[0] == "arrivals" && w.size() >= 2) {
+                once(arrivals, text, "arrivals");
                 for (std::size_t k = 1; k < w.size(); ++k) arrivals_.push_back(natural(w[k]));
             } else if (w[0] == "bound" && w.size() == 4) {
                 const auto key = std::pair{object(w[1]), object(w[2])};
