@@ -45,7 +45,12 @@ py::tuple to_python(const Vector& point, int dim) {
 }
 
 Rational rational_from(const py::handle& value, const char* what) {
-    if (py::isinstance<py::bool_>(value) || py::isinstance<py::float_>(value))
+    // A bool is an int to Python, but True as a coordinate is surely a slip.
+    if (py::isinstance<py::bool_>(value))
+        throw py::type_error(std::string(what) +
+                             ": found a bool, expected an int, a fractions.Fraction or a string "
+                             "like '7/2'");
+    if (py::isinstance<py::float_>(value))
         throw py::type_error(std::string(what) +
                              ": expected an int, a fractions.Fraction or a string like '7/2'; "
                              "floats are inexact, write 0.5 as Fraction(1, 2) or '0.5'");

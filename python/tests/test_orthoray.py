@@ -77,6 +77,8 @@ def test_floats_are_refused():
     scene = orthoray.Scene(2)
     with pytest.raises(TypeError, match="inexact"):
         scene.add_target((0.5, 1))
+    with pytest.raises(TypeError, match="found a bool"):
+        scene.add_target((True, 1))
 
 
 def test_bad_input_carries_file_line_and_column(tmp_path):
