@@ -36,9 +36,12 @@ inline CLI::Validator whole_number_u64() {
 inline CLI::Validator timeout_seconds() {
     return CLI::Validator(
         [](const std::string& text) -> std::string {
+            // strtod alone would also take hex floats, "inf" spelled out and
+            // leading blanks: only decimal notation is documented.
+            const bool decimal = text.find_first_not_of("0123456789.eE+-") == std::string::npos;
             char* end = nullptr;
             const double value = std::strtod(text.c_str(), &end);
-            const bool parsed = !text.empty() && end == text.c_str() + text.size();
+            const bool parsed = decimal && !text.empty() && end == text.c_str() + text.size();
             if (parsed && std::isfinite(value) && value > 0 && value <= 1e9) return {};
             return "found '" + text + "', expected a number of seconds above 0 and at most 10^9";
         },

@@ -116,15 +116,18 @@ Command add_realistic(CLI::App& app) {
     cmd->add_flag("--json", args->json,
                   "one JSON object: answer, best (null when nothing arrives), eps, path, "
                   "arrivals, pairs, seconds");
-    cmd->add_flag("--from-scene", args->from_scene,
-                  "FILE is a mirror scene with one ray carrying an intensity: decide the model "
-                  "derived from its lattice states (docs/realistic-scenes.md, \"From mirror "
-                  "scenes\"); objects S (the ray), R (the target) and e1, e2, ... (the elements)");
+    CLI::Option* from_scene = cmd->add_flag(
+        "--from-scene", args->from_scene,
+        "FILE is a mirror scene with one ray carrying an intensity: decide the model "
+        "derived from its lattice states (docs/realistic-scenes.md, \"From mirror "
+        "scenes\"); objects S (the ray), R (the target) and e1, e2, ... (the elements)");
     cmd->add_option("--min-intensity", args->min_intensity,
                     "with --from-scene: eps, a natural number (default 0)")
-        ->check(not_empty("a natural number"));
+        ->check(not_empty("a natural number"))
+        ->needs(from_scene); // a model states its own eps
     cmd->add_option("--target", args->target,
-                    "with --from-scene: which target is the receiver (default 1)");
+                    "with --from-scene: which target is the receiver (default 1)")
+        ->needs(from_scene);
     cmd->add_option("--write-model", args->write_model,
                     "with --from-scene: write the derived model to this file (then --certificate "
                     "can be checked against it with 'orthoray verify')")

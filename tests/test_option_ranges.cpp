@@ -32,8 +32,8 @@ TEST_CASE("the option --timeout takes only a finite number of seconds above 0",
     for (const std::string& command :
          std::vector<std::string>{"solve " + quote(box), "render " + quote(box) + " -o x.svg",
                                   "bounds " + quote(box), "convert " + quote(box) + " x.json"})
-        for (const std::string value :
-             {"nan", "NaN", "inf", "-inf", "-1", "0", "0.0", "1e300", "1e-400", "x", "''"})
+        for (const std::string value : {"nan", "NaN", "inf", "-inf", "-1", "0", "0.0", "1e300",
+                                        "1e-400", "x", "''", "0x1p-3", "' 1'"})
             require_rejected(command + " --timeout " + value,
                              "expected a number of seconds above 0 and at most 10^9");
     CHECK(run_cli("solve " + quote(box) + " --timeout 1e9").status == 0);
@@ -85,4 +85,9 @@ TEST_CASE("an empty value is refused, not read as the option left out", "[option
              {"realistic " + scene + " --from-scene --min-intensity 1 --write-model ''",
               "--write-model"}})
         require_rejected(args, option + ": found an empty value, expected ");
+    // Options that only mean something with --from-scene are not ignored
+    // without it: a model states its own eps and receiver.
+    require_rejected("realistic " + model + " --min-intensity 5",
+                     "--min-intensity requires --from-scene");
+    require_rejected("realistic " + model + " --target 2", "--target requires --from-scene");
 }
