@@ -100,7 +100,8 @@ TEST_CASE("an output is refused when it has no name or names an input", "[output
     const auto empty = run_cli("solve " + quote(scene) + " --certificate ''");
     CHECK(empty.status == 2);
     CHECK(empty.out.empty());
-    CHECK(empty.err.find("found an empty file name for the certificate") != std::string::npos);
+    CHECK(empty.err.find("--certificate: found an empty value, expected a file name") !=
+          std::string::npos);
     for (const std::string& same : {scene, dir.path("./box.scene")}) {
         const auto r = run_cli("solve " + quote(scene) + " --certificate " + quote(same));
         CHECK(r.status == 2);
