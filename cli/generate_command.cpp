@@ -142,6 +142,9 @@ std::string checked_header(const GenerateArgs& args, const CLI::App& cmd) {
             throw UsageError("the option " + name + " does not apply to the family " + args.family +
                              " (see 'orthoray generate --help')");
         header += ' ' + name;
+        // A flag (--box) takes no value on the command line, though CLI11
+        // records one ("true"): written, it would not parse again.
+        if (option->get_expected_max() == 0) continue;
         for (const std::string& word : option->results()) header += ' ' + word;
     }
     return header;

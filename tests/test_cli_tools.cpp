@@ -64,10 +64,17 @@ TEST_CASE("generate random records the optics options in its header", "[cli][gen
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     CHECK(r.out.starts_with("# orthoray generate random --seed 4 --mirrors 12 --splitters 1/3 "
-                            "--one-sided 1/4 --rays 2 --targets 3 --box true\n"));
+                            "--one-sided 1/4 --rays 2 --targets 3 --box\n"));
     CHECK(r.out == run_cli("generate random --box --targets 3 --rays 2 --one-sided 1/4 "
                            "--splitters 1/3 --mirrors 12 --seed 4")
                        .out);
+    // The header is a command that runs: the same bytes again.
+    const std::string header = r.out.substr(0, r.out.find('\n'));
+    const std::string prefix = "# orthoray ";
+    REQUIRE(header.starts_with(prefix));
+    const CliResult again = run_cli(header.substr(prefix.size()));
+    CHECK(again.status == 0);
+    CHECK(again.out == r.out);
 }
 
 TEST_CASE("generate: each family runs from the command line", "[cli][generate][slow]") {
