@@ -36,6 +36,12 @@ Command add_exchange(CLI::App& app) {
         stop_at_once(std::nullopt);
         const Scene scene = load_scene(*file, scene_format_named(*format));
         const std::optional<IntervalExchange> exchange = exchange_of(scene);
+        if (!exchange && scene.has_diagonal())
+            throw UsageError("found no interval exchange for '" + *file +
+                             "', expected a scene without one-sided elements whose ray reflects "
+                             "at least once, whose tables fit the induction's cap, and where no "
+                             "two states step to one (a collision: 'orthoray pieces' lists them; "
+                             "docs/induction.md, section 6)");
         if (!exchange)
             throw UsageError("found no interval exchange for '" + *file +
                              "', expected a 2D scene without one-sided elements whose ray moves "

@@ -37,8 +37,16 @@ Command add_pieces(CLI::App& app) {
                              "axis-parallel scene (the text form shows the map on the "
                              "eight-sheeted cover; 'orthoray exchange --json' exports it)");
         std::ostringstream out; // nothing reaches stdout unless the tables exist
-        if (!write_piece_tables(scene, out, *json ? PieceTableFormat::json : PieceTableFormat::text)
-                 .available)
+        const bool available =
+            write_piece_tables(scene, out, *json ? PieceTableFormat::json : PieceTableFormat::text)
+                .available;
+        if (!available && scene.has_diagonal())
+            throw UsageError("found no piece tables for '" + *file +
+                             "', expected a scene without one-sided elements whose ray reflects "
+                             "at least once and whose tables fit the induction's cap (with "
+                             "diagonal elements they are the first-return map on the "
+                             "eight-sheeted cover: docs/induction.md, section 6)");
+        if (!available)
             throw UsageError("piece tables exist only for 2D scenes whose ray moves in both x and "
                              "y; '" +
                              *file + "' is not one");

@@ -78,3 +78,27 @@ TEST_CASE("the walk through the command line: pieces shows the collisions, induc
     CHECK(checked.status == 0);
     CHECK(checked.out.find("valid: cycle, 3 reflections") != std::string::npos);
 }
+
+TEST_CASE("exchange and pieces say why a diagonal scene has none", "[cli][octagonal]") {
+    // The tail scene has collisions, so no exchange; a ray absorbed before
+    // it reflects has no tables. Each message names the diagonal case's own
+    // conditions, not the axis-parallel ones (a ray moving along neither
+    // axis), which both scenes meet.
+    TempDir dir;
+    const std::string tail = dir.write("tail.scene", tail_scene);
+    const CliResult exchange = run_cli("exchange " + quote(tail));
+    CHECK(exchange.status == 2);
+    CHECK(exchange.out.empty());
+    CHECK(exchange.err.find("where no two states step to one") != std::string::npos);
+    const std::string absorbed =
+        dir.write("absorbed.scene", "dim 2\nabsorber / 3 4 7 8\nmirror x 0 y 0 9\n"
+                                    "ray 3 5 1 -1\ntarget 100 100\n");
+    for (const std::string command : {"pieces", "exchange"}) {
+        INFO(command);
+        const CliResult r = run_cli(command + " " + quote(absorbed));
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err.find("whose ray reflects at least once") != std::string::npos);
+        CHECK(r.err.find("moves in both x and y") == std::string::npos);
+    }
+}
