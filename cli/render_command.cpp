@@ -367,9 +367,9 @@ Command add_render(CLI::App& app) {
         ->check(not_empty("a file name"));
     CLI::Option* steps =
         cmd->add_option("--steps", args->steps,
-                        "draw the first N segments (default 1000): the path's first N "
-                        "reflections, or for branches at most N states; the caption's answer "
-                        "is decided as 'solve' decides it")
+                        "draw the path's first N reflections (default 1000), and its last "
+                        "segment when it ends by then, or for branches at most N states; the "
+                        "caption's answer is decided as 'solve' decides it")
             ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000'000}));
     add_scene_format_option(cmd, args->format);
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the drawing");

@@ -145,11 +145,21 @@ TEST_CASE("render writes an SVG of the solver's path or a certificate's", "[cli]
     const CliResult r = run_cli("render " + quote(scene) + " -o " + quote(svg));
     CHECK(r.status == 0);
     CHECK(r.err.empty());
-    CHECK(r.out == "wrote " + svg + " (6 segments)\n");
+    CHECK(r.out == "wrote " + svg + " (7 segments)\n"); // 6 reflections, then the target
     const auto doc = orthoray::test::read_xml(slurp(svg));
     INFO(doc.error);
     CHECK(doc.well_formed);
     CHECK(slurp(svg).find("answer yes, reason hit, 6 reflections") != std::string::npos);
+    // The count is the segments drawn, however the path ends: three
+    // reflections then out to the frame, or then into the absorber.
+    for (const char* name :
+         {"escape-after-three-reflections", "absorbed-after-three-reflections"}) {
+        INFO(name);
+        const CliResult ended =
+            run_cli("render " + quote(instance(std::string("2d/") + name + ".scene")) + " -o " +
+                    quote(dir.path("ended.svg")));
+        CHECK(ended.out == "wrote " + dir.path("ended.svg") + " (4 segments)\n");
+    }
 
     for (const char* format : {"text", "jsonl"}) {
         INFO(format);
@@ -194,7 +204,7 @@ TEST_CASE("render draws an induction certificate's path by simulating it", "[cli
         run_cli("render " + quote(scene) + " --certificate " + quote(cert) + " -o " + quote(svg));
     INFO(r.err);
     CHECK(r.status == 0);
-    CHECK(r.out == "wrote " + svg + " (6 segments)\n");
+    CHECK(r.out == "wrote " + svg + " (7 segments)\n"); // 6 reflections, then the target
     const std::string picture = slurp(svg);
     CHECK(picture.find("answer yes, reason hit, 6 reflections (claimed by induced.cert") !=
           std::string::npos);

@@ -157,7 +157,7 @@ TEST_CASE("render --html writes the page through the checked output", "[render][
     const std::string scene = quote(orthoray::test::instance("2d/box-corner-3x5.scene"));
     const auto html = run_cli("render " + scene + " --html " + quote(dir.path("a.html")));
     CHECK(html.status == 0);
-    CHECK(html.out == "wrote " + dir.path("a.html") + " (6 segments)\n");
+    CHECK(html.out == "wrote " + dir.path("a.html") + " (7 segments)\n");
     CHECK(embedded_data(slurp(dir.path("a.html")))["segments"].size() == 7);
     // -o NAME.html is the same page; beside an SVG, both are written.
     CHECK(run_cli("render " + scene + " -o " + quote(dir.path("b.html"))).status == 0);

@@ -61,6 +61,9 @@ struct SceneRenderer::Impl {
 
     std::optional<Point3> last;
     std::uint64_t visits = 0;
+    // The segment drawn after the last point: to the target (a hit) or out
+    // to the frame's edge (an escape). An absorption's point is a visit.
+    bool final_segment = false;
     std::optional<PathEnd> end;
 
     // Branches (walk_branches) instead of one path.
@@ -141,16 +144,19 @@ struct SceneRenderer::Impl {
                       e.reason == Reason::escape ? exit_point(*last, e.direction) : std::nullopt);
         if (e.reason == Reason::hit) {
             segment(*last, frame.normalised(scene.target()));
+            final_segment = true;
         } else if (e.reason == Reason::escape) {
             // Out along the final direction to the frame's edge.
-            if (const std::optional<Point3> out = exit_point(*last, e.direction))
+            if (const std::optional<Point3> out = exit_point(*last, e.direction)) {
                 segment(*last, *out);
+                final_segment = true;
+            }
         }
     }
 
     std::uint64_t segments() const {
         if (branches) return branch_segments;
-        return visits > 0 ? visits - 1 : 0;
+        return (visits > 0 ? visits - 1 : 0) + (final_segment ? 1 : 0);
     }
 
     // The view that shows the most of the path: the 2D view, or in 3D the
