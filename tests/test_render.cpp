@@ -221,7 +221,8 @@ TEST_CASE("tick values are exact round numbers", "[render]") {
     using orthoray::Rational;
     auto labels = [](const Rational& lo, const Rational& hi, int count) {
         std::vector<std::string> result;
-        for (const auto& t : orthoray::render::axis_ticks(lo, hi, count)) result.push_back(t.label);
+        for (const auto& t : orthoray::render::axis_ticks(lo, hi, count).ticks)
+            result.push_back(t.label);
         return result;
     };
     CHECK(labels(0, 5, 5) == std::vector<std::string>{"0", "1", "2", "3", "4", "5"});
@@ -231,16 +232,34 @@ TEST_CASE("tick values are exact round numbers", "[render]") {
           std::vector<std::string>{"0.001", "0.002", "0.003"});
     CHECK(labels(Rational(1'000'000), Rational(1'000'003), 3) ==
           std::vector<std::string>{"1000000", "1000001", "1000002", "1000003"});
-    const auto ticks = orthoray::render::axis_ticks(Rational(-7, 2), Rational(7, 2), 4);
+    const auto ticks = orthoray::render::axis_ticks(Rational(-7, 2), Rational(7, 2), 4).ticks;
     REQUIRE_FALSE(ticks.empty());
     CHECK(ticks.front().label == "-2");
     CHECK(ticks.front().fraction == Approx(1.5 / 7));
     // A span no double can hold still gets round, exact ticks.
     const orthoray::Rational huge(orthoray::Integer("1" + std::string(400, '0')));
-    const auto far = orthoray::render::axis_ticks(0, huge, 4);
+    const auto far = orthoray::render::axis_ticks(0, huge, 4).ticks;
     REQUIRE(far.size() >= 3);
     CHECK(far[1].fraction == Approx(far.back().fraction / static_cast<double>(far.size() - 1)));
     CHECK(far[1].label == "5e399");
+    // Ticks 1 apart at 10^40 would all read 1e40: they count from an exact
+    // round offset instead, which the axis names, and a negative one too.
+    const Rational base(orthoray::Integer("1" + std::string(40, '0')));
+    const auto offset = orthoray::render::axis_ticks(base, base + 3, 3);
+    CHECK(offset.offset == "1e40");
+    CHECK_FALSE(offset.offset_negative);
+    std::vector<std::string> counted;
+    for (const auto& t : offset.ticks) counted.push_back(t.label);
+    CHECK(counted == std::vector<std::string>{"0", "1", "2", "3"});
+    const Rational odd(orthoray::Integer("123456789012345678901234567890123456789"));
+    const auto negative = orthoray::render::axis_ticks(-odd - 2, -odd, 2);
+    CHECK(negative.offset_negative);
+    CHECK(negative.offset == "1.2345678901234567890123456789012346e38");
+    REQUIRE(negative.ticks.size() == 3);
+    CHECK(negative.ticks.front().label == "3209"); // x + 1.23...46e38
+    CHECK(negative.ticks.back().label == "3211");
+    // Near the origin nothing changes.
+    CHECK(orthoray::render::axis_ticks(0, 5, 5).offset.empty());
 }
 
 TEST_CASE("the views of a 3D scene share one scale", "[render]") {

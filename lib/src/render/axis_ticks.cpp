@@ -49,9 +49,41 @@ std::string scientific(const Integer& digits, long exponent) {
 // names a 40-digit coordinate in full would cover its neighbours.
 constexpr std::size_t max_label = 10;
 
+// The label of digits * 10^exponent: its decimal text, or 6 significant
+// digits when that is too long.
+std::string label_of(const Integer& digits, long exponent) {
+    std::string label = decimal(digits, exponent);
+    return label.size() > max_label ? scientific(digits, exponent) : label;
+}
+
+// digits * 10^exponent in full: decimal when short, else every significant
+// digit before the exponent (an offset is named once, so length is no harm,
+// and it must be exact).
+std::string exact_text(const Integer& digits, long exponent) {
+    std::string label = decimal(digits, exponent);
+    if (label.size() <= 2 * max_label) return label;
+    std::string text = Integer(abs(digits)).get_str();
+    while (text.size() > 1 && text.back() == '0') {
+        text.pop_back();
+        ++exponent;
+    }
+    const long power = static_cast<long>(text.size()) - 1 + exponent;
+    // Appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict)
+    // on a chain of string additions here.
+    std::string out = digits < 0 ? "-" : "";
+    out += text[0];
+    if (text.size() > 1) {
+        out += '.';
+        out.append(text, 1);
+    }
+    out += 'e';
+    out += std::to_string(power);
+    return out;
+}
+
 } // namespace
 
-std::vector<Tick> axis_ticks(const Rational& lo, const Rational& hi, int count) {
+AxisTicks axis_ticks(const Rational& lo, const Rational& hi, int count) {
     const Rational span = hi - lo;
     if (sgn(span) <= 0 || count < 1) return {};
     // log10 of the step we would like, span / count; from the digit counts
@@ -75,14 +107,30 @@ std::vector<Tick> axis_ticks(const Rational& lo, const Rational& hi, int count) 
     Integer k, k_last;
     mpz_cdiv_q(k.get_mpz_t(), first.get_num_mpz_t(), first.get_den_mpz_t());
     mpz_fdiv_q(k_last.get_mpz_t(), last.get_num_mpz_t(), last.get_den_mpz_t());
-    std::vector<Tick> ticks;
-    for (; k <= k_last && ticks.size() < 4 * static_cast<std::size_t>(count); ++k) {
+    AxisTicks axis;
+    std::vector<Integer> digits; // tick i is digits[i] * 10^exponent
+    for (; k <= k_last && axis.ticks.size() < 4 * static_cast<std::size_t>(count); ++k) {
         const Rational value = Rational(k) * step;
-        std::string label = decimal(Integer(k * m), exponent);
-        if (label.size() > max_label) label = scientific(Integer(k * m), exponent);
-        ticks.push_back({Rational((value - lo) / span).get_d(), label});
+        digits.push_back(Integer(k * m));
+        axis.ticks.push_back(
+            {Rational((value - lo) / span).get_d(), label_of(digits.back(), exponent)});
     }
-    return ticks;
+    bool distinct = true;
+    for (std::size_t i = 1; i < axis.ticks.size(); ++i)
+        distinct = distinct && axis.ticks[i].label != axis.ticks[i - 1].label;
+    if (distinct) return axis;
+    // Far from the origin: count from a round offset, the first tick's
+    // digits with the last four places (of 10^exponent) cleared, so that
+    // each label keeps at most about five significant digits.
+    const Integer unit = power_of_ten(4);
+    Integer offset;
+    mpz_fdiv_q(offset.get_mpz_t(), digits.front().get_mpz_t(), unit.get_mpz_t());
+    offset *= unit;
+    axis.offset_negative = offset < 0;
+    axis.offset = exact_text(Integer(abs(offset)), exponent);
+    for (std::size_t i = 0; i < axis.ticks.size(); ++i)
+        axis.ticks[i].label = label_of(Integer(digits[i] - offset), exponent);
+    return axis;
 }
 
 } // namespace orthoray::render

@@ -15,7 +15,17 @@ struct Tick {
     std::string label;
 };
 
+struct AxisTicks {
+    std::vector<Tick> ticks;
+    // Empty, or the exact value subtracted from every label: far from the
+    // origin (ticks 1 apart near 10^40), 6 significant digits would give
+    // every tick the same label, so the labels count from this round value
+    // instead and the axis names it once ("x - 1e40").
+    std::string offset;
+    bool offset_negative = false;
+};
+
 // About `count` ticks between lo and hi (lo < hi), inclusive.
-std::vector<Tick> axis_ticks(const Rational& lo, const Rational& hi, int count);
+AxisTicks axis_ticks(const Rational& lo, const Rational& hi, int count);
 
 } // namespace orthoray::render

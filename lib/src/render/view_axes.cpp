@@ -12,10 +12,12 @@ namespace orthoray::render {
 
 void write_axes(SvgWriter& svg, const ViewPlacement& v, const Frame& frame) {
     const double bottom = v.top + v.height;
+    // The axis's name, with the offset its labels count from, if any.
     auto axis_line = [&](int axis, bool horizontal) {
         const double length = horizontal ? v.width : v.height;
         const int count = std::max(2, static_cast<int>(length / 90));
-        for (const Tick& t : axis_ticks(frame.lo[axis], frame.hi[axis], count)) {
+        const AxisTicks ticks = axis_ticks(frame.lo[axis], frame.hi[axis], count);
+        for (const Tick& t : ticks.ticks) {
             const double pos = t.fraction * frame.extent[axis] * v.scale;
             if (horizontal) {
                 const std::string x = number_text(v.left + pos);
@@ -45,20 +47,30 @@ void write_axes(SvgWriter& svg, const ViewPlacement& v, const Frame& frame) {
                          t.label);
             }
         }
+        std::string name(1, axis_name(axis));
+        if (!ticks.offset.empty()) name += (ticks.offset_negative ? " + " : " - ") + ticks.offset;
+        return name;
     };
-    axis_line(v.a, true);
-    axis_line(v.b, false);
+    const std::string a_name = axis_line(v.a, true);
+    const std::string b_name = axis_line(v.b, false);
     svg.text("text",
              {{"class", "axis"},
               {"x", number_text(v.left + v.width / 2)},
               {"y", number_text(bottom + 36)},
               {"text-anchor", "middle"}},
-             std::string(1, axis_name(v.a)));
+             a_name);
+    // The vertical axis's name with an offset may be long: it goes above
+    // the plot, where it has the view's width, and the side keeps the name.
+    const bool b_offset = b_name.size() > 1;
     svg.text("text",
              {{"class", "axis"},
               {"x", number_text(v.left - 62)},
               {"y", number_text(v.top + v.height / 2)}},
-             std::string(1, axis_name(v.b)));
+             b_name.substr(0, 1));
+    if (b_offset)
+        svg.text("text",
+                 {{"class", "axis"}, {"x", number_text(v.left)}, {"y", number_text(v.top - 8)}},
+                 b_name);
 }
 
 // The oblique view has no axis to tick; a small key in the margin left
