@@ -2,8 +2,8 @@
 
 #include "usage_error.hpp"
 
+#include <atomic>
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -23,23 +23,31 @@ std::string reason(int error) {
 
 // The temporary files being written, for remove_unfinished_output(): plain
 // arrays, since a signal handler may read them at any moment. A command
-// writes at most two outputs at once (render's PNG: an SVG and the PNG).
+// writes at most two outputs at once (render's PNG: an SVG and the PNG), but
+// batch's threads and Python's write certificates concurrently: a slot is
+// claimed by a lock-free compare-and-swap (safe beside a signal handler, as
+// a mutex is not), and the handler unlinks only a slot whose path is whole.
 constexpr int max_unfinished = 4;
+enum Slot : int { free_slot, claimed, ready };
 char unfinished_path[max_unfinished][4096];
-volatile std::sig_atomic_t unfinished_used[max_unfinished];
+std::atomic<int> unfinished_used[max_unfinished];
+static_assert(std::atomic<int>::is_always_lock_free, "a signal handler reads the slots");
 
 int remember_unfinished(const std::string& path) {
-    for (int i = 0; i < max_unfinished; ++i)
-        if (!unfinished_used[i] && path.size() < sizeof unfinished_path[i]) {
+    if (path.size() >= sizeof unfinished_path[0]) return -1;
+    for (int i = 0; i < max_unfinished; ++i) {
+        int expected = free_slot;
+        if (unfinished_used[i].compare_exchange_strong(expected, claimed)) {
             std::memcpy(unfinished_path[i], path.c_str(), path.size() + 1);
-            unfinished_used[i] = 1;
+            unfinished_used[i].store(ready);
             return i;
         }
-    return -1;
+    }
+    return -1; // no slot: a signal then leaves this temporary file behind
 }
 
 void forget_unfinished(int slot) {
-    if (slot >= 0) unfinished_used[slot] = 0;
+    if (slot >= 0) unfinished_used[slot].store(free_slot);
 }
 
 bool same_file(const struct stat& a, const struct stat& b) {
@@ -192,7 +200,7 @@ void OutputFile::commit() {
 
 void remove_unfinished_output() noexcept {
     for (int i = 0; i < max_unfinished; ++i)
-        if (unfinished_used[i]) ::unlink(unfinished_path[i]);
+        if (unfinished_used[i].load() == ready) ::unlink(unfinished_path[i]);
 }
 
 // The error of a write to standard output that failed earlier, inside the
