@@ -32,13 +32,13 @@ std::string decimal(const Integer& digits, long exponent) {
     return (digits < 0 ? "-" : "") + text;
 }
 
-// digits * 10^exponent as d.ddddde+N with at most 6 significant digits
+// digits * 10^exponent as d.ddddde+N with at most `significant` digits
 // (cut, not rounded), taken from the exact digits: the value may be far
 // beyond what a double holds.
-std::string scientific(const Integer& digits, long exponent) {
+std::string scientific(const Integer& digits, long exponent, std::size_t significant = 6) {
     const std::string text = Integer(abs(digits)).get_str();
     std::string mantissa = text.substr(0, 1);
-    std::string rest = text.substr(1, 5);
+    std::string rest = text.substr(1, significant - 1);
     while (!rest.empty() && rest.back() == '0') rest.pop_back();
     if (!rest.empty()) mantissa += "." + rest;
     const long power = static_cast<long>(text.size()) - 1 + exponent;
@@ -61,24 +61,7 @@ std::string label_of(const Integer& digits, long exponent) {
 // and it must be exact).
 std::string exact_text(const Integer& digits, long exponent) {
     std::string label = decimal(digits, exponent);
-    if (label.size() <= 2 * max_label) return label;
-    std::string text = Integer(abs(digits)).get_str();
-    while (text.size() > 1 && text.back() == '0') {
-        text.pop_back();
-        ++exponent;
-    }
-    const long power = static_cast<long>(text.size()) - 1 + exponent;
-    // Appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict)
-    // on a chain of string additions here.
-    std::string out = digits < 0 ? "-" : "";
-    out += text[0];
-    if (text.size() > 1) {
-        out += '.';
-        out.append(text, 1);
-    }
-    out += 'e';
-    out += std::to_string(power);
-    return out;
+    return label.size() <= 2 * max_label ? label : scientific(digits, exponent, std::string::npos);
 }
 
 } // namespace

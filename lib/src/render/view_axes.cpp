@@ -12,8 +12,9 @@ namespace orthoray::render {
 
 void write_axes(SvgWriter& svg, const ViewPlacement& v, const Frame& frame) {
     const double bottom = v.top + v.height;
-    // The axis's name, with the offset its labels count from, if any.
-    auto axis_line = [&](int axis, bool horizontal) {
+    // Returns what follows the axis's name: the offset its labels count
+    // from (" - 1e40"), or nothing.
+    auto axis_line = [&](int axis, bool horizontal) -> std::string {
         const double length = horizontal ? v.width : v.height;
         const int count = std::max(2, static_cast<int>(length / 90));
         const AxisTicks ticks = axis_ticks(frame.lo[axis], frame.hi[axis], count);
@@ -47,30 +48,28 @@ void write_axes(SvgWriter& svg, const ViewPlacement& v, const Frame& frame) {
                          t.label);
             }
         }
-        std::string name(1, axis_name(axis));
-        if (!ticks.offset.empty()) name += (ticks.offset_negative ? " + " : " - ") + ticks.offset;
-        return name;
+        if (ticks.offset.empty()) return {};
+        return (ticks.offset_negative ? " + " : " - ") + ticks.offset;
     };
-    const std::string a_name = axis_line(v.a, true);
-    const std::string b_name = axis_line(v.b, false);
+    const std::string a_offset = axis_line(v.a, true);
+    const std::string b_offset = axis_line(v.b, false);
     svg.text("text",
              {{"class", "axis"},
               {"x", number_text(v.left + v.width / 2)},
               {"y", number_text(bottom + 36)},
               {"text-anchor", "middle"}},
-             a_name);
+             axis_name(v.a) + a_offset);
     // The vertical axis's name with an offset may be long: it goes above
     // the plot, where it has the view's width, and the side keeps the name.
-    const bool b_offset = b_name.size() > 1;
     svg.text("text",
              {{"class", "axis"},
               {"x", number_text(v.left - 62)},
               {"y", number_text(v.top + v.height / 2)}},
-             b_name.substr(0, 1));
-    if (b_offset)
+             std::string(1, axis_name(v.b)));
+    if (!b_offset.empty())
         svg.text("text",
                  {{"class", "axis"}, {"x", number_text(v.left)}, {"y", number_text(v.top - 8)}},
-                 b_name);
+                 axis_name(v.b) + b_offset);
 }
 
 // The oblique view has no axis to tick; a small key in the margin left
