@@ -208,6 +208,34 @@ TEST_CASE("tampered realistic certificates are rejected for the reason changed",
     }
 }
 
+TEST_CASE("a bad operand of a realistic certificate is located at its own column", "[realistic]") {
+    const RealisticModel m = read_realistic(greedy_fails);
+    const std::string good = certificate_of(m);
+    auto message = [&](const std::string& from, const std::string& to) {
+        std::string text = good;
+        const std::size_t at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+        std::istringstream in(text);
+        try {
+            verify_realistic_certificate(m, in, "c.cert");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    CHECK(message("best 20", "best  x") == "c.cert:3:7: found 'x', expected a natural number");
+    CHECK(message("path S C B R", "path S C\tQ R") ==
+          "c.cert:4:10: found 'Q', expected an object of the model");
+    CHECK(message("arrivals 100 40 20", "arrivals 100 4x 20") ==
+          "c.cert:5:14: found '4x', expected a natural number");
+    CHECK(message("bound C B 40", "bound C B -40") ==
+          "c.cert:" +
+              std::to_string(
+                  1 + std::count(good.begin(), good.begin() + good.find("bound C B"), '\n')) +
+              ":11: found '-40', expected a natural number");
+}
+
 TEST_CASE("realistic models: every malformed line is one located message", "[realistic]") {
     auto message = [](const std::string& text) {
         try {

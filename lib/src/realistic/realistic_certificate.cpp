@@ -7,9 +7,9 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
 
+#include <algorithm>
 #include <map>
 #include <ostream>
-#include <sstream>
 #include <utility>
 
 namespace orthoray {
@@ -75,6 +75,7 @@ private:
     std::vector<Integer> arrivals_;
     std::map<std::pair<std::size_t, std::size_t>, Integer> bounds_;
     int line_ = 0;
+    std::vector<int> columns_; // of the current line's words
 
     [[noreturn]] void fail(int column, const std::string& found, const std::string& expected) {
         throw InputError(name_, line_, column,
@@ -92,9 +93,16 @@ private:
         };
         while (std::getline(in_, text)) {
             ++line_;
-            std::istringstream words(text);
+            // Each word with its column (1-based, a byte a column, as the
+            // other readers count), so a bad operand is reported where it is.
             std::vector<std::string> w;
-            for (std::string word; words >> word;) w.push_back(word);
+            columns_.clear();
+            for (std::size_t at = text.find_first_not_of(" \t\r\v\f"); at != std::string::npos;) {
+                const std::size_t end = std::min(text.find_first_of(" \t\r\v\f", at), text.size());
+                w.push_back(text.substr(at, end - at));
+                columns_.push_back(static_cast<int>(at) + 1);
+                at = text.find_first_not_of(" \t\r\v\f", end);
+            }
             if (w.empty()) continue;
             if (ended_) fail(1, w[0], "nothing after 'end'");
             if (!header) {
@@ -106,16 +114,16 @@ private:
                 yes_ = w[1] == "yes";
             } else if (w[0] == "best" && w.size() == 2) {
                 once(best, text, "best");
-                if (w[1] != "none") best_ = natural(w[1]);
+                if (w[1] != "none") best_ = natural(w, 1);
             } else if (w[0] == "path" && w.size() >= 3) {
                 once(path, text, "path");
-                for (std::size_t k = 1; k < w.size(); ++k) path_.push_back(object(w[k]));
+                for (std::size_t k = 1; k < w.size(); ++k) path_.push_back(object(w, k));
             } else if (w[0] == "arrivals" && w.size() >= 2) {
                 once(arrivals, text, "arrivals");
-                for (std::size_t k = 1; k < w.size(); ++k) arrivals_.push_back(natural(w[k]));
+                for (std::size_t k = 1; k < w.size(); ++k) arrivals_.push_back(natural(w, k));
             } else if (w[0] == "bound" && w.size() == 4) {
-                const auto key = std::pair{object(w[1]), object(w[2])};
-                if (!bounds_.emplace(key, natural(w[3])).second) fail(1, text, "one bound a pair");
+                const auto key = std::pair{object(w, 1), object(w, 2)};
+                if (!bounds_.emplace(key, natural(w, 3)).second) fail(1, text, "one bound a pair");
             } else if (w[0] == "end" && w.size() == 1) {
                 ended_ = true;
             } else {
@@ -128,16 +136,17 @@ private:
                              "answer, best, bounds, end)");
     }
 
-    std::size_t object(const std::string& word) {
-        const auto it = names_.find(word);
-        if (it == names_.end()) fail(1, word, "an object of the model");
+    // Word k of the current line, read as an object or a natural number.
+    std::size_t object(const std::vector<std::string>& w, std::size_t k) {
+        const auto it = names_.find(w[k]);
+        if (it == names_.end()) fail(columns_[k], w[k], "an object of the model");
         return it->second;
     }
 
-    Integer natural(const std::string& word) {
-        if (word.empty() || word.find_first_not_of("0123456789") != std::string::npos)
-            fail(1, word, "a natural number");
-        return Integer(word);
+    Integer natural(const std::vector<std::string>& w, std::size_t k) {
+        if (w[k].find_first_not_of("0123456789") != std::string::npos)
+            fail(columns_[k], w[k], "a natural number");
+        return Integer(w[k]);
     }
 
     // The first failing claim, or "" when all hold.
