@@ -10,6 +10,7 @@
 #include "orthoray/solve.hpp"
 #include "output_file.hpp"
 #include "run_monitor.hpp"
+#include "scene_checks.hpp"
 #include "scene_format_option.hpp"
 
 #include <nlohmann/json.hpp>
@@ -106,6 +107,7 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
             level = read_lazor_level(bytes, path);
         else
             scene = parse_scene(bytes, path, scene_format_named(args_.format));
+        if (!level && !args_.choices.min_intensity.empty()) require_intensities(scene, path);
     } catch (const InputError& e) {
         if (done(result_key(path, hash))) return {};
         return {Ending::bad_input, file_head(path, hash) + ",\"error\":" + json_string(e.what()) +

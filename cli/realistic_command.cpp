@@ -5,6 +5,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/realistic.hpp"
 #include "output_file.hpp"
+#include "scene_checks.hpp"
 #include "stop_at_once.hpp"
 
 #include <nlohmann/json.hpp>
@@ -20,7 +21,8 @@ namespace {
 struct RealisticArgs {
     std::string file, certificate, min_intensity = "0", write_model;
     bool json = false, from_scene = false;
-    std::size_t target = 1;
+    std::size_t target = 1, max_states = 1'000'000;
+    double timeout = 0;
 };
 
 // The model to decide: the file itself, or the one derived from a scene.
@@ -38,12 +40,13 @@ RealisticModel model_of(const RealisticArgs& args) {
         throw UsageError("found --min-intensity " + args.min_intensity +
                          ", expected a natural number (0, 1, 2, ...)");
     const Scene scene = load_scene(args.file);
+    require_one_intense_ray(scene, args.file);
     if (args.target == 0 || args.target > scene.targets.size())
         throw UsageError("found --target " + std::to_string(args.target) +
                          ", expected a target of the scene (1 to " +
                          std::to_string(scene.targets.size()) + ")");
-    RealisticModel model =
-        realistic_model_of_scene(scene, args.target - 1, Integer(args.min_intensity, 10));
+    RealisticModel model = realistic_model_of_scene(
+        scene, args.target - 1, Integer(args.min_intensity, 10), args.max_states);
     if (!args.write_model.empty()) {
         OutputFile out(args.write_model, {args.file}, "the model");
         out.stream() << write_realistic(model);
@@ -52,12 +55,21 @@ RealisticModel model_of(const RealisticArgs& args) {
     return model;
 }
 
-int run(const RealisticArgs& args) {
+int run(const RealisticArgs& args, bool timed) {
     // Files are renamed into place whole and the answer printed at the end:
-    // SIGINT and SIGTERM end the command at once with exit 3
+    // SIGINT, SIGTERM and --timeout end the command at once with exit 3
     // (stop_at_once.hpp), a file being written left as it was.
-    stop_at_once(std::nullopt);
-    const RealisticModel model = model_of(args);
+    stop_at_once(timed ? std::optional<double>(args.timeout) : std::nullopt);
+    RealisticModel model;
+    try {
+        model = model_of(args);
+    } catch (const StatesExceeded& e) {
+        // A limit, like --max-steps: the scene is fine, and nothing is
+        // proven about it yet (the model is not complete, so not written).
+        std::fprintf(stderr, "orthoray: stopped: %s (--max-states %zu); no answer\n", e.what(),
+                     e.max_states());
+        return limit;
+    }
     const auto begin = std::chrono::steady_clock::now();
     const RealisticAnswer answer = solve_realistic(model);
     const double seconds =
@@ -108,8 +120,9 @@ Command add_realistic(CLI::App& app) {
         "pairs (docs/realistic-scenes.md).\n\n"
         "Example:\n"
         "  orthoray realistic instances/realistic/greedy-fails.realistic\n\n"
-        "Exit status: 0 yes, 1 no, 2 bad input or usage, 5 the certificate could not be\n"
-        "written. 'orthoray verify MODEL.realistic CERT' checks a certificate.");
+        "Exit status: 0 yes, 1 no, 2 bad input or usage, 3 stopped (--max-states,\n"
+        "--timeout, a signal), 5 the certificate could not be written.\n"
+        "'orthoray verify MODEL.realistic CERT' checks a certificate.");
     cmd->add_option("FILE", args->file,
                     "the model (docs/realistic-scenes.md), or a scene with --from-scene")
         ->required();
@@ -128,6 +141,11 @@ Command add_realistic(CLI::App& app) {
     cmd->add_option("--target", args->target,
                     "with --from-scene: which target is the receiver (default 1)")
         ->needs(from_scene);
+    cmd->add_option("--max-states", args->max_states,
+                    "with --from-scene: the most states of the ray the derivation keeps; past "
+                    "them it stops, exit 3 (default 1000000)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
+        ->needs(from_scene);
     cmd->add_option("--write-model", args->write_model,
                     "with --from-scene: write the derived model to this file (then --certificate "
                     "can be checked against it with 'orthoray verify')")
@@ -135,7 +153,8 @@ Command add_realistic(CLI::App& app) {
     cmd->add_option("--certificate", args->certificate,
                     "write the path and the closed pair bounds to this file")
         ->check(not_empty("a file name"));
-    return [args] { return run(*args); };
+    const CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the command");
+    return [args, timeout] { return run(*args, timeout->count() > 0); };
 }
 
 } // namespace orthoray::cli

@@ -7,6 +7,7 @@
 #include "orthoray/solve.hpp"
 #include "output_file.hpp"
 #include "run_monitor.hpp"
+#include "scene_checks.hpp"
 #include "scene_format_option.hpp"
 #include "solve_choices.hpp"
 
@@ -87,16 +88,6 @@ Answer stopped_before_solving(Limit limit) {
     Answer answer;
     answer.limit = limit;
     return answer;
-}
-
-// Every ray must say how intense it starts: the first that does not is bad
-// input, at its line.
-void require_intensities(const Scene& scene, const std::string& file) {
-    for (const Ray& ray : scene.rays)
-        if (!ray.intensity)
-            throw InputError(file, ray.line, 1,
-                             "found a ray without an intensity, expected 'intensity N' on every "
-                             "ray for --min-intensity");
 }
 
 int run(const SolveArgs& args, const CLI::Option* certificate) {

@@ -353,6 +353,12 @@ TEST_CASE("solve --min-intensity prints intensities and exits 0, 1, 2 or 3", "[i
                              ":2:1: found a ray without an intensity, expected 'intensity N' on "
                              "every ray for --min-intensity\n");
     CHECK(missing.out.empty());
+    // batch reports the same message as that instance's error.
+    const test::CliResult batched = test::run_cli("batch --min-intensity 0 " + test::quote(plain));
+    CHECK(batched.status == 1); // an instance not decided
+    CHECK(batched.out.find(R"("error":")" + plain +
+                           ":2:1: found a ray without an intensity, expected 'intensity N' on "
+                           R"(every ray for --min-intensity","status":2})") != std::string::npos);
     CHECK(test::run_cli("solve --min-intensity 1/2 " + test::quote(file)).status == 2);
     CHECK(test::run_cli("solve --min-intensity 0 --engine graph " + test::quote(file)).status == 2);
     // A certificate, which verify accepts; batch takes the option too.

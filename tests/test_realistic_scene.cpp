@@ -13,6 +13,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 using namespace orthoray;
 
 namespace {
@@ -140,6 +142,38 @@ TEST_CASE("realistic --from-scene runs the program on a scene", "[realistic][cli
     // One ray with an intensity, and a certificate only beside a model.
     const std::string two = dir.write("two.scene", "dim 2\nray 0 0 1 0 intensity 5\n"
                                                    "ray 0 1 1 0 intensity 5\ntarget 1 0\n");
-    CHECK(test::run_cli("realistic --from-scene " + test::quote(two)).status == 2);
+    const test::CliResult second = test::run_cli("realistic --from-scene " + test::quote(two));
+    CHECK(second.status == 2);
+    CHECK(second.err.find("two.scene:3:1: found a second ray, expected one ray") !=
+          std::string::npos);
+    const std::string dark = dir.write("dark.scene", "dim 2\nray 0 0 1 0\ntarget 1 0\n");
+    const test::CliResult unlit = test::run_cli("realistic --from-scene " + test::quote(dark));
+    CHECK(unlit.status == 2);
+    CHECK(unlit.err.find("dark.scene:2:1: found a ray without an intensity") != std::string::npos);
     CHECK(test::run_cli("realistic --from-scene --certificate x " + test::quote(file)).status == 2);
+}
+
+TEST_CASE("realistic --from-scene stops at --max-states as a limit, writing nothing",
+          "[realistic][cli]") {
+    test::TempDir dir;
+    // The corridor's ray reaches 101 states: its start and one a reflection,
+    // at heights 1/2, 3/2, ..., 199/2, then it escapes. 101 fit, 100 do not.
+    const std::string file =
+        dir.write("corridor.scene", "dim 2\nmirror x 0 y 0 100 reflectance 2/3\n"
+                                    "mirror x 1 y 0 100 reflectance 2/3\n"
+                                    "ray 1/2 0 1 1 intensity 1000\ntarget 1/2 4\n");
+    constexpr int states = 101;
+    const std::string model = dir.path("m.realistic");
+    auto run = [&](int cap) {
+        return test::run_cli("realistic --from-scene --max-states " + std::to_string(cap) +
+                             " --write-model " + test::quote(model) + ' ' + test::quote(file));
+    };
+    const test::CliResult capped = run(states - 1);
+    CHECK(capped.status == 3);
+    CHECK(capped.out.empty());
+    CHECK(capped.err.find("orthoray: stopped: the scene's ray reaches more than " +
+                          std::to_string(states - 1) + " states") != std::string::npos);
+    CHECK(!std::filesystem::exists(model));
+    CHECK(run(states).status == 0);
+    CHECK(std::filesystem::exists(model));
 }

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <istream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -78,10 +79,20 @@ struct RealisticAnswer {
 // ... (the elements in file order); first legs and triples are the legs of
 // every reachable state of the ray, each triple's transfer the exact factor
 // of the event at its middle object. The scene must have one ray, with an
-// intensity; UnsupportedScene otherwise, or when the ray reaches more than
-// `max_states` states.
+// intensity (UnsupportedScene otherwise). Deriving the model walks every
+// reachable state once, keeping each: past `max_states` of them it stops
+// with StatesExceeded, a limit and not bad input.
 RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
                                         std::size_t max_states = 1'000'000);
+
+class StatesExceeded : public std::runtime_error {
+public:
+    explicit StatesExceeded(std::size_t max_states);
+    std::size_t max_states() const { return max_states_; }
+
+private:
+    std::size_t max_states_;
+};
 
 // The model in the text format read_realistic reads.
 std::string write_realistic(const RealisticModel& model);

@@ -89,10 +89,7 @@ private:
             Item item = std::move(work.back());
             work.pop_back();
             if (!seen_.insert(item).second) continue;
-            if (seen_.size() > max_states_)
-                throw UnsupportedScene("the scene's ray reaches more than " +
-                                       std::to_string(max_states_) +
-                                       " states: too many to derive its realistic model");
+            if (seen_.size() > max_states_) throw StatesExceeded(max_states_);
             const engine::ReferenceEvent e = stepper_->next(item.p, item.v);
             if (stepper_->passes(target_, item.p, item.v, e)) leg(item, receiver_object);
             if (e.escape) continue;
@@ -128,6 +125,11 @@ private:
 };
 
 } // namespace
+
+StatesExceeded::StatesExceeded(std::size_t max_states)
+    : std::runtime_error("the scene's ray reaches more than " + std::to_string(max_states) +
+                         " states, the most the derivation of its realistic model keeps"),
+      max_states_(max_states) {}
 
 RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
                                         std::size_t max_states) {
