@@ -12,6 +12,7 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace orthoray {
 
@@ -45,6 +46,7 @@ private:
     class InductionSection;
     class IlluminationSection;
     void write_vector(const Vector& x);
+    void write_number(const Rational& x);
 
     std::ostream& out_;
     const Scene& scene_;
@@ -55,6 +57,7 @@ private:
     // cycle starts at the first reflection.
     std::optional<std::pair<Vector, Vector>> cycle_start_;
     Vector last_direction_;
+    std::vector<char> digits_; // write_number's buffer
     std::unique_ptr<InductionSection> induction_;
     std::unique_ptr<IlluminationSection> illumination_;
     bool induced_ = false; // the induction engine has begun recording

@@ -8,6 +8,7 @@
 #include "certify/illumination_certificate_section.hpp"
 #include "orthoray/exchange.hpp"
 
+#include <cstring>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -143,12 +144,23 @@ void CertificateWriter::write_vector(const Vector& x) {
     const bool json = format_ == CertificateFormat::jsonl;
     if (json) out_ << '[';
     for (int j = 0; j < scene_.dim; ++j) {
-        if (json)
-            out_ << (j ? ", \"" : "\"") << to_string(x[j]) << '"';
-        else
-            out_ << ' ' << to_string(x[j]);
+        out_ << (json ? (j ? ", \"" : "\"") : " ");
+        write_number(x[j]);
+        if (json) out_ << '"';
     }
     if (json) out_ << ']';
+}
+
+// As to_string writes it, through a buffer kept across calls: a path writes
+// dim numbers a reflection, and a string each would be an allocation each.
+void CertificateWriter::write_number(const Rational& x) {
+    const mpq_srcptr q = x.get_mpq_t();
+    // mpq_get_str's bound: both parts' digits, a sign, the '/' and the NUL.
+    const std::size_t bound =
+        mpz_sizeinbase(mpq_numref(q), 10) + mpz_sizeinbase(mpq_denref(q), 10) + 3;
+    if (digits_.size() < bound) digits_.resize(bound);
+    mpq_get_str(digits_.data(), 10, q);
+    out_.write(digits_.data(), static_cast<std::streamsize>(std::strlen(digits_.data())));
 }
 
 CertificateWriter::~CertificateWriter() = default;

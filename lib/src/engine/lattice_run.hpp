@@ -177,6 +177,8 @@ private:
     Answer answer_;
 
     std::optional<shoot::Shot<Int>> pending_; // computed, reflection not yet taken
+    lattice::Coords report_coords_;           // report()'s storage, reused
+    Vector report_point_;
 
     // One-sided elements: the state and mirror after reflection 1, where the
     // tail pass starts, and the period once Brent's detector has found it.
@@ -265,10 +267,12 @@ private:
         return Step::next;
     }
 
+    // One point a reflection to the path's sink (a certificate): into
+    // rationals kept from the last report, so no step allocates.
     void report() {
-        lattice::Coords c;
-        for (int j = 0; j < M; ++j) c[j] = lattice::to_integer(s_.p[j]);
-        options_.path->visit(ls_.point(c), ls_.direction(s_.negative));
+        for (int j = 0; j < M; ++j) lattice::set_integer(report_coords_[j], s_.p[j]);
+        ls_.point_into(report_coords_, report_point_);
+        options_.path->visit(report_point_, ls_.direction(s_.negative));
     }
 
     bool finish(Reason reason) {

@@ -48,17 +48,27 @@ inline Integer from_integer<Integer>(const Integer& x) {
     return x;
 }
 
-inline Integer to_integer(std::int64_t x) {
-    return Integer(static_cast<long>(x));
+// r = x, reusing r's limbs (no allocation once r has two).
+inline void set_integer(Integer& r, std::int64_t x) {
+    r = static_cast<long>(x);
 }
-inline Integer to_integer(int128_t x) {
+inline void set_integer(Integer& r, int128_t x) {
     const bool negative = x < 0;
     const uint128_t m = negative ? -static_cast<uint128_t>(x) : static_cast<uint128_t>(x);
-    Integer r;
     mp_limb_t* limbs = mpz_limbs_write(r.get_mpz_t(), 2);
     limbs[0] = static_cast<mp_limb_t>(m);
     limbs[1] = static_cast<mp_limb_t>(m >> 64);
     mpz_limbs_finish(r.get_mpz_t(), negative ? -2 : 2); // normalizes the size
+}
+inline void set_integer(Integer& r, const Integer& x) {
+    r = x;
+}
+inline Integer to_integer(std::int64_t x) {
+    return Integer(static_cast<long>(x));
+}
+inline Integer to_integer(int128_t x) {
+    Integer r;
+    set_integer(r, x);
     return r;
 }
 inline const Integer& to_integer(const Integer& x) {

@@ -79,10 +79,16 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
     out.target_reachable = out.to_lattice(scene.target(), out.target);
     if (out.target_reachable)
         for (int i = 0; i < out.dim; ++i) track(out.target[i]);
-    // The ray's 2^dim directions, built once: each element is asked about
-    // every one of them, and a direction is a vector of rationals.
-    std::vector<Vector> directions;
-    for (unsigned d = 0; d < (1u << out.dim); ++d) directions.push_back(out.direction(d));
+    // Mask bit i negates active axis i of the ray's direction.
+    for (unsigned d = 0; d < (1u << out.dim); ++d) {
+        Vector x;
+        for (int i = 0; i < out.dim; ++i) {
+            const Rational& c = v[out.active[i]];
+            x[out.active[i]] = ((d >> i) & 1u) ? Rational(-abs(c)) : Rational(abs(c));
+        }
+        out.directions.push_back(std::move(x));
+    }
+    const std::vector<Vector>& directions = out.directions;
     out.elements.reserve(scene.elements.size());
     for (const Element& e : scene.elements) {
         poll();
@@ -110,21 +116,20 @@ LatticeScene make_lattice(const Scene& scene, const SetupPoll& poll, std::size_t
 }
 
 Vector LatticeScene::point(const Coords& p) const {
-    Vector x = ray->start; // inactive coordinates never change
-    for (int i = 0; i < dim; ++i) {
-        x[active[i]] = Rational(p[i], scale[i]);
-        x[active[i]].canonicalize();
-    }
+    Vector x;
+    point_into(p, x);
     return x;
 }
 
-Vector LatticeScene::direction(unsigned mask) const {
-    Vector d;
+void LatticeScene::point_into(const Coords& p, Vector& x) const {
+    for (int j = 0; j < scene->dim; ++j) // inactive coordinates never change
+        if (ray->direction[j] == 0) x[j] = ray->start[j];
     for (int i = 0; i < dim; ++i) {
-        const Rational& v = ray->direction[active[i]];
-        d[active[i]] = ((mask >> i) & 1u) ? Rational(-abs(v)) : Rational(abs(v));
+        const mpq_ptr q = x[active[i]].get_mpq_t();
+        mpz_set(mpq_numref(q), p[i].get_mpz_t());
+        mpz_set(mpq_denref(q), scale[i].get_mpz_t());
+        mpq_canonicalize(q);
     }
-    return d;
 }
 
 bool LatticeScene::to_lattice(const Vector& x, Coords& out) const {

@@ -53,10 +53,17 @@ struct LatticeScene {
     bool one_sided = false;
     const Scene* scene = nullptr;
     const Ray* ray = nullptr; // the ray whose lattice this is
+    // The ray's 2^dim directions in scene coordinates, by mask: built once,
+    // since every element is asked about each, and a path reports one a
+    // reflection.
+    std::vector<Vector> directions;
 
     // Back to scene coordinates (exact): a lattice point, a direction mask.
     Vector point(const Coords& p) const;
-    Vector direction(unsigned mask) const;
+    // The same into x, reusing its storage (a path reports a point a
+    // reflection; fresh rationals would cost an allocation each).
+    void point_into(const Coords& p, Vector& x) const;
+    const Vector& direction(unsigned mask) const { return directions[mask]; }
     // Whether a scene point lies on the lattice (inactive coordinates equal
     // the start's, active ones integral after scaling); if so, its coordinates.
     bool to_lattice(const Vector& x, Coords& out) const;
