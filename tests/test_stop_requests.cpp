@@ -425,6 +425,51 @@ TEST_CASE("verify, pieces, exchange, realistic and batch stop on a signal while 
     CHECK_FALSE(fs::exists(dir.path("r.jsonl")));
 }
 
+TEST_CASE("a FIFO instance that never gets a writer ends at --timeout or a signal",
+          "[stop_requests][cli]") {
+    // batch reads instances on its worker threads, where the signal's
+    // handler does not run, and solve's --timeout is a deadline polled, not
+    // a signal: each waits for the writer in slices that ask to stop.
+    const TempDir dir;
+    const std::string scene = source_path("instances/2d/box-corner-3x5.scene");
+    const std::string fifo = dir.path("waits.scene");
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    {
+        INFO("batch --timeout: the FIFO's line records the limit, the batch goes on");
+        const pid_t child = spawn_cli(
+            {"batch", "--jobs", "1", "--timeout", "0.3", fifo, scene, "-o", dir.path("r.jsonl")},
+            dir.path("out"), dir.path("err"));
+        const std::optional<int> status = wait_at_most(child, 30);
+        REQUIRE(status);
+        CHECK(*status == 1);
+        const std::string results = slurp(dir.path("r.jsonl"));
+        CHECK(results.find(R"("path":")" + fifo +
+                           R"(","hash":"unreadable","answer":"unknown",)"
+                           R"("reason":"limit","limit":"time")") != std::string::npos);
+        CHECK(results.find(R"("answer":"yes")") != std::string::npos);
+    }
+    for (const int signal : {SIGINT, SIGTERM}) {
+        INFO("batch, signal " << signal);
+        const pid_t child = spawn_cli({"batch", "--jobs", "2", fifo, "-o", dir.path("s.jsonl")},
+                                      dir.path("out"), dir.path("err"));
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        REQUIRE(kill(child, signal) == 0);
+        const std::optional<int> status = wait_at_most(child, 30);
+        REQUIRE(status);
+        CHECK(*status == 3);
+        CHECK(slurp(dir.path("s.jsonl")).empty());
+    }
+    {
+        INFO("solve --timeout");
+        const pid_t child = spawn_cli({"solve", "--json", "--timeout", "0.3", fifo},
+                                      dir.path("out"), dir.path("err"));
+        const std::optional<int> status = wait_at_most(child, 30);
+        REQUIRE(status);
+        CHECK(*status == 3);
+        CHECK(slurp(dir.path("out")).find(R"("limit":"time")") != std::string::npos);
+    }
+}
+
 TEST_CASE("verify --timeout ends a check whose stretch is long", "[stop_requests][cli]") {
     // A true but costly branch line: a state inside a closed 2^40 box,
     // whose stretch the checker walks for some 2^41 reflections.

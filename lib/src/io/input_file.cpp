@@ -10,12 +10,16 @@
 #include <cstring>
 #include <fcntl.h>
 #include <istream>
+#include <poll.h>
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
 
 namespace orthoray {
 namespace {
+
+// The ReadStopCheck the readers on this thread ask (parse.hpp).
+thread_local ReadStopCheck* innermost_check = nullptr;
 
 [[noreturn]] void fail_to_read(const std::string& path, int error, const char* what) {
     // No SA_RESTART on orthoray's signal handlers: EINTR means one of them ran.
@@ -34,7 +38,9 @@ int open_for_reading(const std::string& path) {
         if (fd < 0) fail_to_read(path, errno, "a readable standard input");
         return fd;
     }
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // Non-blocking, so that opening a FIFO does not wait for its writer
+    // here, where nothing could stop the wait: read_some waits instead.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) fail_to_read(path, errno, "no readable file");
     struct stat info {};
     if (fstat(fd, &info) == 0 && S_ISDIR(info.st_mode)) {
@@ -44,11 +50,31 @@ int open_for_reading(const std::string& path) {
     return fd;
 }
 
-// read(2) into `buffer`; 0 at the end of the file.
+// How often a read waiting for data asks the thread's ReadStopCheck.
+constexpr int stop_check_ms = 10;
+
+// read(2) into `buffer`; 0 at the end of the file. A FIFO waiting for its
+// writer, or a slow pipe, is waited on with poll(2) in slices while a
+// ReadStopCheck lives on this thread, so that a stop asked from another
+// thread (batch's workers: the signal handler runs on the main thread) or
+// a deadline ends the wait; with none, the wait is unbounded and a
+// signal's handler interrupts it (EINTR). A FIFO opened without blocking
+// reports nothing to poll(2) until a writer comes, so it is not mistaken
+// for an empty file.
 std::size_t read_some(int fd, const std::string& path, char* buffer, std::size_t size) {
-    const ssize_t n = ::read(fd, buffer, size);
-    if (n < 0) fail_to_read(path, errno, "a file that cannot be read");
-    return static_cast<std::size_t>(n);
+    for (;;) {
+        pollfd wait{fd, POLLIN, 0};
+        const int ready = ::poll(&wait, 1, innermost_check ? stop_check_ms : -1);
+        if (ready < 0) fail_to_read(path, errno, "a file that cannot be read");
+        if (ready == 0) {
+            ReadStopCheck::poll();
+            continue;
+        }
+        const ssize_t n = ::read(fd, buffer, size);
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) continue;
+        if (n < 0) fail_to_read(path, errno, "a file that cannot be read");
+        return static_cast<std::size_t>(n);
+    }
 }
 
 // A stream buffer over a file descriptor. Errors are thrown from underflow;
@@ -90,10 +116,6 @@ private:
 
 ReadInterrupted::ReadInterrupted(const std::string& path)
     : std::runtime_error("interrupted while reading '" + path + "'") {}
-
-namespace {
-thread_local ReadStopCheck* innermost_check = nullptr;
-} // namespace
 
 ReadStopCheck::ReadStopCheck(std::string path, std::function<bool()> stop_requested)
     : path_(std::move(path)), stop_requested_(std::move(stop_requested)), outer_(innermost_check) {
