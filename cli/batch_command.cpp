@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <malloc.h>
+#include <pthread.h>
 #include <thread>
 
 namespace orthoray::cli {
@@ -52,6 +54,18 @@ InstanceList list_instances(const BatchArgs& args) {
 
 namespace {
 
+// The address space a new thread's stack takes (glibc's default, from the
+// stack limit at startup), with its guard page and some slack.
+std::uint64_t thread_stack_bytes() {
+    pthread_attr_t attributes;
+    std::size_t size = std::size_t{8} << 20;
+    if (pthread_getattr_default_np(&attributes) == 0) {
+        pthread_attr_getstacksize(&attributes, &size);
+        pthread_attr_destroy(&attributes);
+    }
+    return size + (std::uint64_t{1} << 20);
+}
+
 int run(const BatchArgs& args) {
     check(args);
 #ifdef ORTHORAY_MPI
@@ -61,9 +75,19 @@ int run(const BatchArgs& args) {
         throw UsageError("found --mpi, expected a build with MPI (cmake -DORTHORAY_MPI=ON; "
                          "docs/batch.md)");
 #endif
-    if (args.choices.max_memory > 0) limit_memory(args.choices.max_memory);
-    BatchOwner owner(args,
-                     args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency()));
+    const unsigned jobs =
+        args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    if (args.choices.max_memory > 0) {
+        // Every thread's first allocation would reserve a malloc arena of
+        // 64 MiB of address space, the whole budget of a small limit: the
+        // threads' searches then failed to build their lattices and fell
+        // back to the slow scan, or the threads could not start at all.
+        // One arena serves all; and the threads' stacks are reserved on
+        // top of the budget, which is for the instances.
+        mallopt(M_ARENA_MAX, 1);
+        limit_memory(args.choices.max_memory, jobs * thread_stack_bytes());
+    }
+    BatchOwner owner(args, jobs);
     return owner.finish();
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <system_error>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace orthoray::cli {
 namespace fs = std::filesystem;
@@ -91,6 +92,12 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
         }
     }
     if (InterruptGuard::requested()) throw ReadInterrupted(inputs.back());
+    // A path named twice is one instance, decided once: its result's key is
+    // its path and content, so a second line could never be told apart,
+    // and --resume would find it done (a fresh run and a resumed one must
+    // leave the same lines).
+    std::unordered_set<std::string> seen;
+    std::erase_if(out, [&](const std::string& path) { return !seen.insert(path).second; });
     return out;
 }
 

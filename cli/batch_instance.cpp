@@ -79,9 +79,19 @@ std::string generated_key(const BatchArgs& args, const std::string& seed) {
     return result_key("generate " + args.generate, seed);
 }
 
-InstanceDecider::InstanceDecider(const BatchArgs& args) : args_(args) {
+InstanceDecider::InstanceDecider(const BatchArgs& args, unsigned threads)
+    : args_(args), threads_(threads) {
     if (!args.generate.empty()) generator_.emplace(args.generate);
 }
+
+namespace {
+
+// An instance whose result the file holds already (--resume).
+Outcome skipped(Kept kept) {
+    return {kept == Kept::failed ? Ending::skipped_failure : Ending::skipped, {}};
+}
+
+} // namespace
 
 Outcome InstanceDecider::decide(const std::string& name, const DoneCheck& done) const {
     return generator_ ? decide_generated(name, done) : decide_file(name, done);
@@ -96,12 +106,15 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
     Scene scene;
     std::optional<LazorLevel> level;
     try {
-        const std::string bytes = read_file(path);
-        hash = content_hash(bytes);
-        if (done(result_key(path, hash))) return {};
+        // Asked while the file is read (a FIFO may wait for its writer: the
+        // signal's handler runs on the main thread, not this one) and while
+        // its numbers are converted.
         const ReadStopCheck stop_check(path, [&] {
             return InterruptGuard::requested() || (deadline && Clock::now() >= *deadline);
         });
+        const std::string bytes = read_file(path);
+        hash = content_hash(bytes);
+        if (const Kept kept = done(result_key(path, hash)); kept != Kept::no) return skipped(kept);
         // A .bff is a level whatever --format says: --format names a scene syntax.
         if (is_level_file(path))
             level = read_lazor_level(bytes, path);
@@ -109,7 +122,7 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
             scene = parse_scene(bytes, path, scene_format_named(args_.format));
         if (!level && !args_.choices.min_intensity.empty()) require_intensities(scene, path);
     } catch (const InputError& e) {
-        if (done(result_key(path, hash))) return {};
+        if (const Kept kept = done(result_key(path, hash)); kept != Kept::no) return skipped(kept);
         return {Ending::bad_input, file_head(path, hash) + ",\"error\":" + json_string(e.what()) +
                                        ",\"status\":" + std::to_string(bad_input) + '}'};
     } catch (const ReadInterrupted&) {
@@ -125,7 +138,7 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
 }
 
 Outcome InstanceDecider::decide_generated(const std::string& seed, const DoneCheck& done) const {
-    if (done(generated_key(args_, seed))) return {};
+    if (const Kept kept = done(generated_key(args_, seed)); kept != Kept::no) return skipped(kept);
     const auto begin = Clock::now();
     const std::string head = "{\"generate\":" + json_string(args_.generate) + ",\"seed\":" + seed;
     Scene scene;
@@ -141,7 +154,7 @@ Outcome InstanceDecider::solve_scene(const Scene& scene, const std::string& head
                                      const std::string& certificate_name,
                                      Clock::time_point begin) const {
     InstanceMonitor monitor(args_.choices.deadline(begin));
-    SolveOptions options = args_.choices.options();
+    SolveOptions options = args_.choices.options(threads_);
     options.monitor = &monitor;
     std::optional<OutputFile> file;
     std::unique_ptr<CertificateWriter> writer;

@@ -29,8 +29,9 @@ enum class Ending : char {
     no = 'n',
     bad_input = 'b',
     limit = 'l',
-    interrupted = 'i', // a signal stopped it: nothing is recorded, --resume decides it again
-    skipped = 's',     // its result is in the file already (--resume)
+    interrupted = 'i',     // a signal stopped it: nothing is recorded, --resume decides it again
+    skipped = 's',         // its result is in the file already (--resume)
+    skipped_failure = 'f', // likewise, and that result is bad input or a limit
 };
 
 struct Outcome {
@@ -38,15 +39,19 @@ struct Outcome {
     std::string line; // the result line; empty when nothing is recorded
 };
 
-// Whether the results already hold the instance with this key (result_key).
-using DoneCheck = std::function<bool(const std::string& key)>;
+// Whether the results already hold the instance with this key (result_key),
+// and if so whether it was decided or failed (bad input, a limit).
+enum class Kept { no, decided, failed };
+using DoneCheck = std::function<Kept(const std::string& key)>;
 
 // The key of a generated instance's result (result_key).
 std::string generated_key(const BatchArgs& args, const std::string& seed);
 
 class InstanceDecider {
 public:
-    explicit InstanceDecider(const BatchArgs& args);
+    // `threads`: how many deciders run at once in this process, sharing
+    // --max-memory.
+    InstanceDecider(const BatchArgs& args, unsigned threads);
     // Decides the instance `name` (a path, or with --generate a seed) unless
     // `done` says its result is in the file; bad input becomes a result line
     // with the message.
@@ -61,6 +66,7 @@ private:
                         std::chrono::steady_clock::time_point begin) const;
 
     const BatchArgs& args_;
+    unsigned threads_;
     std::optional<SceneGenerator> generator_;
 };
 

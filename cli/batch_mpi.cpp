@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
-#include <set>
 #include <thread>
 
 namespace orthoray::cli {
@@ -60,12 +59,19 @@ int coordinate(const BatchArgs& args, int ranks) {
             if (end - size >= n) break;
             for (std::size_t i = end - size; i < std::min(end, n); ++i) {
                 const std::string name = instances.name(i);
-                if (instances.generated() && owner.log->done(generated_key(args, name))) {
-                    owner.record({Ending::skipped, {}});
-                    continue;
+                if (instances.generated()) {
+                    if (const Kept kept = owner.log->kept(generated_key(args, name));
+                        kept != Kept::no) {
+                        owner.record(
+                            {kept == Kept::failed ? Ending::skipped_failure : Ending::skipped, {}});
+                        continue;
+                    }
                 }
+                // The path, then the versions the file holds, each marked
+                // '!' when its result failed.
                 work += name + '\0';
-                for (const std::string& hash : owner.log->versions_of(name)) work += hash + ',';
+                for (const auto& [hash, failed] : owner.log->versions_of(name))
+                    work += hash + (failed ? "!," : ",");
                 work += '\0';
             }
         }
@@ -77,21 +83,22 @@ int coordinate(const BatchArgs& args, int ranks) {
 
 void work(const BatchArgs& args) {
     const InterruptGuard interrupts;
-    const InstanceDecider decider(args);
+    const InstanceDecider decider(args, 1); // one a rank
     for (;;) {
         send({}, 0, request);
         MPI_Status status;
         MPI_Probe(0, chunk, MPI_COMM_WORLD, &status);
         const std::string work = receive(status);
         if (work.empty()) return;
-        std::vector<std::pair<std::string, std::set<std::string>>> instances;
+        std::vector<std::pair<std::string, std::map<std::string, bool>>> instances;
         for (std::size_t at = 0; at < work.size();) {
             const std::size_t path_end = work.find('\0', at);
             const std::size_t hashes_end = work.find('\0', path_end + 1);
-            std::set<std::string> hashes;
+            std::map<std::string, bool> hashes; // -> its result failed
             for (std::size_t h = path_end + 1; h < hashes_end;) {
                 const std::size_t comma = work.find(',', h);
-                hashes.insert(work.substr(h, comma - h));
+                const bool failed = work[comma - 1] == '!';
+                hashes[work.substr(h, comma - h - (failed ? 1 : 0))] = failed;
                 h = comma + 1;
             }
             instances.emplace_back(work.substr(at, path_end - at), std::move(hashes));
@@ -101,11 +108,11 @@ void work(const BatchArgs& args) {
         // front end, .ci/tidy) refuses to capture those in a lambda.
         for (const auto& instance : instances) {
             const std::string& path = instance.first;
-            const std::set<std::string>& hashes = instance.second;
+            const std::map<std::string, bool>& hashes = instance.second;
             const DoneCheck done = [&](const std::string& key) {
-                for (const std::string& hash : hashes)
-                    if (key == result_key(path, hash)) return true;
-                return false;
+                for (const auto& [hash, failed] : hashes)
+                    if (key == result_key(path, hash)) return failed ? Kept::failed : Kept::decided;
+                return Kept::no;
             };
             const Outcome outcome = decider.decide(path, done);
             send(static_cast<char>(outcome.ending) + outcome.line, 0, result);

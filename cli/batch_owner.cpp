@@ -30,8 +30,8 @@ std::unique_ptr<ResultsLog> open_results(const BatchArgs& args, const InstanceLi
 
 BatchOwner::BatchOwner(const BatchArgs& args, unsigned jobs)
     : instances(list_instances(args)), log(open_results(args, instances)),
-      progress(!args.quiet && isatty(STDERR_FILENO)), decider_(args),
-      done_([this](const std::string& key) { return log->done(key); }),
+      progress(!args.quiet && isatty(STDERR_FILENO)), decider_(args, jobs),
+      done_([this](const std::string& key) { return log->kept(key); }),
       begin_(std::chrono::steady_clock::now()),
       threads_(jobs, instances, next, decider_, done_,
                [this](const Outcome& outcome) { record(outcome); }) {}

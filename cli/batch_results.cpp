@@ -27,8 +27,7 @@ constexpr std::size_t longest_line = std::size_t{1} << 20;
 }
 
 // The key of a complete result line, or nothing when `line` is not one.
-std::optional<std::string> key_of(const std::string& line) {
-    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+std::optional<std::string> key_of(const nlohmann::json& j) {
     if (!j.is_object()) return std::nullopt;
     const auto version = j.find("hash");
     if (const auto path = j.find("path");
@@ -40,6 +39,13 @@ std::optional<std::string> key_of(const std::string& line) {
         return result_key("generate " + generator->get<std::string>(),
                           std::to_string(seed->get<std::uint64_t>()));
     return std::nullopt;
+}
+
+// Whether a result line records a failure: bad input (status 2) or a limit (3).
+bool failed(const nlohmann::json& j) {
+    const auto status = j.find("status");
+    return status != j.end() && status->is_number_unsigned() &&
+           (status->get<std::uint64_t>() == 2 || status->get<std::uint64_t>() == 3);
 }
 
 // What a result line names its instance by: the path, or the seed of a
@@ -97,11 +103,12 @@ ResultsLog::ResultsLog(const std::string& path, bool resume)
                     torn = line.size() > longest_line;
                     continue;
                 }
-                const std::optional<std::string> key = key_of(line);
+                const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+                const std::optional<std::string> key = key_of(j);
                 if (!key)
                     torn = true;
                 else {
-                    done_.insert(*key);
+                    done_[*key] = failed(j);
                     good = offset;
                 }
                 line.clear();
@@ -116,13 +123,19 @@ ResultsLog::ResultsLog(const std::string& path, bool resume)
     next_sync_ = std::chrono::steady_clock::now() + std::chrono::seconds(1);
 }
 
-std::vector<std::string> ResultsLog::versions_of(const std::string& source) const {
+Kept ResultsLog::kept(const std::string& key) const {
+    const auto it = done_.find(key);
+    if (it == done_.end()) return Kept::no;
+    return it->second ? Kept::failed : Kept::decided;
+}
+
+std::vector<std::pair<std::string, bool>> ResultsLog::versions_of(const std::string& source) const {
     // Keys are source, newline, version: a source's keys are adjacent.
-    std::vector<std::string> versions;
+    std::vector<std::pair<std::string, bool>> versions;
     const std::string prefix = source + '\n';
     for (auto it = done_.lower_bound(prefix);
-         it != done_.end() && it->compare(0, prefix.size(), prefix) == 0; ++it)
-        versions.push_back(it->substr(prefix.size()));
+         it != done_.end() && it->first.compare(0, prefix.size(), prefix) == 0; ++it)
+        versions.emplace_back(it->first.substr(prefix.size()), it->second);
     return versions;
 }
 

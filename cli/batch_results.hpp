@@ -3,13 +3,16 @@
 // nothing half-written is misread (docs/batch.md).
 #pragma once
 
+#include "batch_instance.hpp"
+
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace orthoray::cli {
@@ -35,9 +38,12 @@ public:
     ResultsLog(const ResultsLog&) = delete;
     ResultsLog& operator=(const ResultsLog&) = delete;
 
-    bool done(const std::string& key) const { return done_.count(key) > 0; }
-    // The versions (content hashes) the file holds a result for at `source`.
-    std::vector<std::string> versions_of(const std::string& source) const;
+    // Whether the file holds a result for `key`, and whether that result
+    // failed (status 2, bad input, or 3, a limit).
+    Kept kept(const std::string& key) const;
+    // The versions (content hashes) the file holds a result for at
+    // `source`, each with whether its result failed.
+    std::vector<std::pair<std::string, bool>> versions_of(const std::string& source) const;
     std::size_t kept() const { return done_.size(); }
     std::uint64_t dropped_bytes() const { return dropped_; }
 
@@ -58,7 +64,7 @@ private:
     bool standard_output_ = true;
     int fd_ = -1;
     std::string path_;
-    std::set<std::string> done_;
+    std::map<std::string, bool> done_; // key -> its result failed
     std::uint64_t dropped_ = 0;
     // Lines reach the disk at most a second after they are written, so a
     // power loss costs at most the last second's instances (decided again

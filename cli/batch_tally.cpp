@@ -23,6 +23,10 @@ void Tally::count(Ending ending) {
     case Ending::skipped:
         ++skipped;
         break;
+    case Ending::skipped_failure:
+        ++skipped;
+        ++skipped_failures;
+        break;
     case Ending::interrupted:
         return;
     }
@@ -44,15 +48,18 @@ void Tally::draw_progress(std::size_t total, std::chrono::steady_clock::time_poi
 int Tally::finish(std::size_t total, double seconds) const {
     std::fprintf(stderr,
                  "batch: %zu of %zu instances in %.3f s: %zu yes, %zu no, %zu bad input, %zu at a "
-                 "limit, %zu already in the results\n",
+                 "limit, %zu already in the results",
                  done.load(), total, seconds, yes.load(), no.load(), bad.load(), limited.load(),
                  skipped.load());
+    if (skipped_failures > 0)
+        std::fprintf(stderr, " (%zu of them bad input or at a limit)", skipped_failures.load());
+    std::fputc('\n', stderr);
     if (done < total) {
         std::fprintf(stderr, "orthoray: stopped: interrupted; 'orthoray batch --resume -o FILE' "
                              "goes on where it stopped\n");
         return limit;
     }
-    return bad + limited > 0 ? Exit::no : Exit::yes;
+    return bad + limited + skipped_failures > 0 ? Exit::no : Exit::yes;
 }
 
 } // namespace orthoray::cli

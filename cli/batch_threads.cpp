@@ -1,6 +1,10 @@
 #include "batch_threads.hpp"
 
 #include "run_monitor.hpp"
+#include "usage_error.hpp"
+
+#include <string>
+#include <system_error>
 
 namespace orthoray::cli {
 
@@ -9,7 +13,18 @@ BatchThreads::BatchThreads(unsigned jobs, const InstanceList& instances,
                            const DoneCheck& done, Record record)
     : instances_(instances), next_(next), decider_(decider), done_(done),
       record_(std::move(record)), running_(jobs) {
-    for (unsigned j = 0; j < jobs; ++j) threads_.emplace_back([this] { work(); });
+    try {
+        for (unsigned j = 0; j < jobs; ++j) threads_.emplace_back([this] { work(); });
+    } catch (const std::system_error& e) {
+        // The destructor does not run for a constructor that throws: stop
+        // and join the threads started, or their std::thread would
+        // terminate the process.
+        failed_ = true;
+        for (std::thread& t : threads_) t.join();
+        throw UsageError("found --jobs " + std::to_string(jobs) + ", expected at most " +
+                         std::to_string(threads_.size()) +
+                         " (no more threads could start: " + e.code().message() + ")");
+    }
 }
 
 BatchThreads::~BatchThreads() {

@@ -51,12 +51,12 @@ bool InterruptGuard::requested() {
     return interrupt_requested.load(std::memory_order_relaxed);
 }
 
-void limit_memory(std::uint64_t megabytes) {
+void limit_memory(std::uint64_t megabytes, std::uint64_t reserved) {
     // /proc/self/statm: the first field is the address space in pages.
     std::uint64_t pages = 0;
     std::ifstream("/proc/self/statm") >> pages;
     const std::uint64_t page = static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
-    const std::uint64_t cap = pages * page + (megabytes << 20);
+    const std::uint64_t cap = pages * page + (megabytes << 20) + reserved;
     const rlimit limit{cap, cap};
     setrlimit(RLIMIT_AS, &limit);
 }

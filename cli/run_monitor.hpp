@@ -25,9 +25,11 @@ public:
     static bool requested();
 };
 
-// Limits the process's address space to its current size plus `megabytes`,
-// so allocations past it fail (std::bad_alloc, a limit) instead of swapping.
-void limit_memory(std::uint64_t megabytes);
+// Limits the process's address space to its current size plus `megabytes`
+// (and `reserved` bytes more, for what is about to be mapped outside the
+// budget: batch's thread stacks), so allocations past it fail
+// (std::bad_alloc, a limit) instead of swapping.
+void limit_memory(std::uint64_t megabytes, std::uint64_t reserved = 0);
 
 class SolveMonitor final : public RunMonitor {
 public:

@@ -39,8 +39,14 @@ void SolveChoices::check() const {
                          "(the intensity question has its own branch search)");
 }
 
-SolveOptions SolveChoices::options() const {
+SolveOptions SolveChoices::options(unsigned sharing) const {
     SolveOptions options;
+    // The illumination search keeps its branch states within three quarters
+    // of the budget (its share, when `sharing` searches run at once), so it
+    // ends with Limit::memory at a state boundary, lit targets kept, rather
+    // than wherever an allocation fails; the last quarter is for everything
+    // else (stepping, the answer, the certificate).
+    if (max_memory > 0) options.max_state_bytes = (max_memory << 20) / 4 * 3 / sharing;
     options.engine = engine_names().at(engine);
     options.cycle_detector = detectors.at(detector);
     options.arithmetic = arithmetics.at(arithmetic);

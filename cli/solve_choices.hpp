@@ -29,7 +29,8 @@ struct SolveChoices {
     // a natural number, the graph and induction engines (UsageError).
     void check() const;
     // The library's options for these choices (no observers attached).
-    SolveOptions options() const;
+    // The options of one run; `sharing`: how many runs share --max-memory.
+    SolveOptions options(unsigned sharing = 1) const;
     // `begin` plus the timeout, when there is one.
     std::optional<std::chrono::steady_clock::time_point>
     deadline(std::chrono::steady_clock::time_point begin) const;

@@ -138,12 +138,6 @@ int run(const SolveArgs& args, const CLI::Option* certificate) {
                          "writes no certificate)");
     SolveOptions options = args.choices.options();
     if (options.min_intensity) require_intensities(scene, args.file);
-    // The illumination search keeps its branch states within three quarters
-    // of the same budget, so it ends with Limit::memory at a state boundary,
-    // lit targets kept, rather than wherever an allocation fails; the last
-    // quarter is for everything else (stepping, the answer, the certificate).
-    if (args.choices.max_memory > 0)
-        options.max_state_bytes = (args.choices.max_memory << 20) / 4 * 3;
     SolveMonitor monitor(scene, deadline, !args.quiet && options.engine != Engine::graph,
                          scene.single_trajectory() ? "reflections" : "branch states");
     options.monitor = &monitor;

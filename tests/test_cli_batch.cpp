@@ -150,6 +150,58 @@ TEST_CASE("batch records a bad file as a result and goes on", "[batch][cli]") {
     CHECK(by_path[dir.path("missing.scene")]["hash"] == "unreadable");
 }
 
+TEST_CASE("batch decides a path named twice once, fresh or resumed", "[batch][cli]") {
+    const TempDir dir;
+    const std::string good = dir.write("good.scene", slurp(instance("2d/box-corner-3x5.scene")));
+    const std::string bad = dir.write("bad.scene", "dim 2\nmirror q 0 y 0 1\n");
+    const std::string manifest = dir.write("list.txt", good + "\n" + bad + "\n" + good + "\n");
+    const std::string out = dir.path("r.jsonl");
+    const CliResult run =
+        run_cli("batch --jobs 2 " + quote(manifest) + ' ' + quote(good) + " -o " + quote(out));
+    CHECK(run.status == 1);
+    const Results results = read_results(slurp(out));
+    REQUIRE(results.lines.size() == 2);
+    CHECK(results.lines[0]["path"] == good);
+    CHECK(results.lines[1]["path"] == bad);
+    // Resumed, the kept bad-input line still makes the batch's status 1.
+    const CliResult again = run_cli("batch " + quote(manifest) + " -o " + quote(out) + " --resume");
+    CHECK(again.status == 1);
+    CHECK(again.err.find("2 already in the results (1 of them bad input or at a limit)") !=
+          std::string::npos);
+    CHECK(read_results(slurp(out)).lines.size() == 2);
+    // A manifest of the good one alone resumes with status 0.
+    const std::string only = dir.write("only.txt", good + "\n");
+    CHECK(run_cli("batch " + quote(only) + " -o " + quote(out) + " --resume").status == 0);
+}
+
+TEST_CASE("batch --max-memory leaves room for its threads and answers as solve does",
+          "[batch][cli]") {
+    // Each thread's malloc arena alone would take 64 MiB of address space,
+    // and its stack 8: a small budget once aborted the process when a
+    // thread could not start, or sent every search to the slow scan.
+    const TempDir dir;
+    const std::string scene = source_path("instances/2d/box-corner-3x5.scene");
+    const std::string splitters =
+        dir.write("split.scene", "dim 2\nsplitter x 2 y 1 3\nmirror x 0 y 0 5\nmirror y 6 x 0 4\n"
+                                 "ray 1 0 1 1\ntarget 4 4\ntarget 0 3\n");
+    for (const char* jobs : {"1", "2", "8"}) {
+        INFO("--jobs " << jobs);
+        const CliResult run = run_cli("batch --jobs " + std::string(jobs) + " --max-memory 10 " +
+                                      quote(scene) + ' ' + quote(splitters));
+        const Results results = read_results(run.out);
+        REQUIRE(results.lines.size() == 2);
+        for (const json& line : results.lines) {
+            INFO(line.dump());
+            const CliResult alone =
+                run_cli("solve --json --max-memory 10 " + quote(line["path"].get<std::string>()));
+            const json expected = json::parse(alone.out);
+            CHECK(line["answer"] == expected["answer"]);
+            CHECK(line["reflections"] == expected["reflections"]);
+            CHECK(line["status"] == alone.status);
+        }
+    }
+}
+
 TEST_CASE("batch reads a manifest from standard input", "[batch][cli]") {
     const TempDir dir;
     const std::string scene = instance("2d/box-corner-3x5.scene");
@@ -337,8 +389,9 @@ TEST_CASE("batch decides Lazor levels as puzzle solve --json does, bad ones as e
 
     const std::string first = slurp(out);
     const CliResult again = run_cli(command + " --resume");
-    CHECK(again.status == 0);
-    CHECK(again.err.find("5 already in the results") != std::string::npos);
+    CHECK(again.status == 1); // the malformed level's kept line
+    CHECK(again.err.find("5 already in the results (1 of them bad input or at a limit)") !=
+          std::string::npos);
     CHECK(slurp(out) == first);
 
     // --max-steps caps a level's search nodes, as puzzle solve --max-nodes does.
