@@ -84,14 +84,9 @@ InstanceDecider::InstanceDecider(const BatchArgs& args, unsigned threads)
     if (!args.generate.empty()) generator_.emplace(args.generate);
 }
 
-namespace {
-
-// An instance whose result the file holds already (--resume).
-Outcome skipped(Kept kept) {
+Outcome kept_outcome(Kept kept) {
     return {kept == Kept::failed ? Ending::skipped_failure : Ending::skipped, {}};
 }
-
-} // namespace
 
 Outcome InstanceDecider::decide(const std::string& name, const DoneCheck& done) const {
     return generator_ ? decide_generated(name, done) : decide_file(name, done);
@@ -114,7 +109,8 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
         });
         const std::string bytes = read_file(path);
         hash = content_hash(bytes);
-        if (const Kept kept = done(result_key(path, hash)); kept != Kept::no) return skipped(kept);
+        if (const Kept kept = done(result_key(path, hash)); kept != Kept::no)
+            return kept_outcome(kept);
         // A .bff is a level whatever --format says: --format names a scene syntax.
         if (is_level_file(path))
             level = read_lazor_level(bytes, path);
@@ -122,7 +118,8 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
             scene = parse_scene(bytes, path, scene_format_named(args_.format));
         if (!level && !args_.choices.min_intensity.empty()) require_intensities(scene, path);
     } catch (const InputError& e) {
-        if (const Kept kept = done(result_key(path, hash)); kept != Kept::no) return skipped(kept);
+        if (const Kept kept = done(result_key(path, hash)); kept != Kept::no)
+            return kept_outcome(kept);
         return {Ending::bad_input, file_head(path, hash) + ",\"error\":" + json_string(e.what()) +
                                        ",\"status\":" + std::to_string(bad_input) + '}'};
     } catch (const ReadInterrupted&) {
@@ -138,7 +135,8 @@ Outcome InstanceDecider::decide_file(const std::string& path, const DoneCheck& d
 }
 
 Outcome InstanceDecider::decide_generated(const std::string& seed, const DoneCheck& done) const {
-    if (const Kept kept = done(generated_key(args_, seed)); kept != Kept::no) return skipped(kept);
+    if (const Kept kept = done(generated_key(args_, seed)); kept != Kept::no)
+        return kept_outcome(kept);
     const auto begin = Clock::now();
     const std::string head = "{\"generate\":" + json_string(args_.generate) + ",\"seed\":" + seed;
     Scene scene;

@@ -44,6 +44,9 @@ struct Outcome {
 enum class Kept { no, decided, failed };
 using DoneCheck = std::function<Kept(const std::string& key)>;
 
+// The outcome of an instance whose result the file holds already (--resume).
+Outcome kept_outcome(Kept kept);
+
 // The key of a generated instance's result (result_key).
 std::string generated_key(const BatchArgs& args, const std::string& seed);
 

@@ -62,8 +62,7 @@ int coordinate(const BatchArgs& args, int ranks) {
                 if (instances.generated()) {
                     if (const Kept kept = owner.log->kept(generated_key(args, name));
                         kept != Kept::no) {
-                        owner.record(
-                            {kept == Kept::failed ? Ending::skipped_failure : Ending::skipped, {}});
+                        owner.record(kept_outcome(kept));
                         continue;
                     }
                 }
