@@ -174,6 +174,7 @@ TEST_CASE("batch decides a path named twice once, fresh or resumed", "[batch][cl
     CHECK(run_cli("batch " + quote(only) + " -o " + quote(out) + " --resume").status == 0);
 }
 
+#ifndef ORTHORAY_SANITIZE // sanitizers reserve terabytes of address space and abort on failure
 TEST_CASE("batch --max-memory leaves room for its threads and answers as solve does",
           "[batch][cli]") {
     // Each thread's malloc arena alone would take 64 MiB of address space,
@@ -201,6 +202,7 @@ TEST_CASE("batch --max-memory leaves room for its threads and answers as solve d
         }
     }
 }
+#endif
 
 TEST_CASE("batch reads a manifest from standard input", "[batch][cli]") {
     const TempDir dir;
