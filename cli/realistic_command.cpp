@@ -60,6 +60,8 @@ int run(const RealisticArgs& args, bool timed) {
     // SIGINT, SIGTERM and --timeout end the command at once with exit 3
     // (stop_at_once.hpp), a file being written left as it was.
     stop_at_once(timed ? std::optional<double>(args.timeout) : std::nullopt);
+    // The time counts the derivation too: from a scene it is most of it.
+    const auto begin = std::chrono::steady_clock::now();
     RealisticModel model;
     try {
         model = model_of(args);
@@ -70,7 +72,6 @@ int run(const RealisticArgs& args, bool timed) {
                      e.max_states());
         return limit;
     }
-    const auto begin = std::chrono::steady_clock::now();
     const RealisticAnswer answer = solve_realistic(model);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -142,8 +143,9 @@ Command add_realistic(CLI::App& app) {
                     "with --from-scene: which target is the receiver (default 1)")
         ->needs(from_scene);
     cmd->add_option("--max-states", args->max_states,
-                    "with --from-scene: the most states of the ray the derivation keeps; past "
-                    "them it stops, exit 3 (default 1000000)")
+                    "with --from-scene: the most states leaving junctions (where the ray "
+                    "may split) the derivation keeps; past them it stops, exit 3 (default "
+                    "1000000)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
         ->needs(from_scene);
     cmd->add_option("--write-model", args->write_model,

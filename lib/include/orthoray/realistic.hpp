@@ -80,8 +80,10 @@ struct RealisticAnswer {
 // every reachable state of the ray, each triple's transfer the exact factor
 // of the event at its middle object. The scene must have one ray, with an
 // intensity (UnsupportedScene otherwise). Deriving the model walks every
-// reachable state once, keeping each: past `max_states` of them it stops
-// with StatesExceeded, a limit and not bad input.
+// reachable state, keeping only those that leave a junction (a point where
+// a ray may split, docs/optics.md): past `max_states` of them it stops with
+// StatesExceeded, a limit and not bad input. A ray that never splits is
+// walked in constant memory, however long its orbit.
 RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
                                         std::size_t max_states = 1'000'000);
 

@@ -1,19 +1,22 @@
 // The realistic model of a mirror scene (docs/realistic-scenes.md, "From
 // mirror scenes"). Every reachable state of the scene's ray, all branches
 // at once, is walked on the ray's lattice (or with the rational scan where
-// diagonals leave it); each segment is a leg from the object of the event it
-// leaves (the source for the first) to the object of the event it reaches,
-// and to the receiver when it passes the target. Consecutive legs give the
+// diagonals leave it), keeping only the states that leave junctions. Each
+// segment is a leg from the object of the event it leaves (the source for
+// the first) to the object of the event it reaches, and to the receiver
+// when it passes the target. Consecutive legs give the
 // triples, the transfer of a triple being floor(i * f) with f the factor of
 // the event at its middle object (event_rule.hpp, outgoing_factor). The
 // legs are exact; what the model forgets is which state a leg came from, so
 // the dynamic program may chain triples that no single ray follows.
 #include "orthoray/realistic.hpp"
 
+#include "engine/cycle_detector.hpp"
 #include "engine/event_stepper.hpp"
 #include "engine/lattice_stepper.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
@@ -34,6 +37,7 @@ struct Item {
         return std::tie(p, v, previous, current, factor) <
                std::tie(o.p, o.v, o.previous, o.current, o.factor);
     }
+    bool operator==(const Item&) const = default;
 };
 
 // The object an event belongs to: the first element acting there, in file
@@ -82,22 +86,51 @@ public:
     }
 
 private:
-    // Every state reachable from `start`, each once.
+    // Every state reachable from `start`, all branches. Only the states
+    // leaving a junction are kept, each once, so a branch that merges into
+    // one already taken ends there; between junctions the ray is
+    // deterministic, and follow() keeps O(1) states however long it runs.
     void walk(Item start) {
         std::vector<Item> work{std::move(start)};
         while (!work.empty()) {
             Item item = std::move(work.back());
             work.pop_back();
-            if (!seen_.insert(item).second) continue;
-            if (seen_.size() > max_states_) throw StatesExceeded(max_states_);
-            const engine::ReferenceEvent e = stepper_->next(item.p, item.v);
+            follow(std::move(item), work);
+        }
+    }
+
+    // The stretch from `item` (engine/stretch.hpp) up to an escape, an
+    // absorption or a junction, whose unseen ways out join `work`. A
+    // stretch that never reaches one is a cycle, and Brent's method notices
+    // it. It watches whole items, not points and directions only: an item
+    // is a function of the one before, while its previous object and factor
+    // are not functions of its point and direction. Legs are sets, so the
+    // part of the cycle walked twice before the repeat is seen adds nothing.
+    void follow(Item item, std::vector<Item>& work) {
+        engine::BrentDetector<Item> cycle;
+        for (std::uint64_t i = 1; !cycle.observe(item, i); ++i) {
+            engine::ReferenceEvent e = stepper_->next(item.p, item.v);
             if (stepper_->passes(target_, item.p, item.v, e)) leg(item, receiver_object);
-            if (e.escape) continue;
+            if (e.escape) return;
             const std::size_t next = object_of(scene_, e.acting);
             leg(item, next);
-            for (const engine::Outgoing& out : e.outgoing)
-                work.push_back({e.point, out.direction, item.current, next,
-                                engine::outgoing_factor(e.acting, item.v, out.direction)});
+            auto leaving = [&](engine::Outgoing& out) {
+                Rational factor = engine::outgoing_factor(e.acting, item.v, out.direction);
+                return Item{e.point, std::move(out.direction), item.current, next,
+                            std::move(factor)};
+            };
+            if (e.outgoing.empty()) return; // absorbed
+            if (!e.junction) {
+                item = leaving(e.outgoing.front());
+                continue;
+            }
+            for (engine::Outgoing& out : e.outgoing) {
+                Item branch = leaving(out);
+                if (!seen_.insert(branch).second) continue;
+                if (seen_.size() > max_states_) throw StatesExceeded(max_states_);
+                work.push_back(std::move(branch));
+            }
+            return;
         }
     }
 
@@ -119,7 +152,7 @@ private:
     const Vector& target_;
     std::size_t max_states_;
     std::unique_ptr<engine::EventStepper> stepper_;
-    std::set<Item> seen_;
+    std::set<Item> seen_; // the states leaving junctions, walked or waiting
     std::set<std::size_t> first_legs_;
     std::map<std::tuple<std::size_t, std::size_t, std::size_t>, Rational> triples_;
 };
@@ -128,7 +161,8 @@ private:
 
 StatesExceeded::StatesExceeded(std::size_t max_states)
     : std::runtime_error("the scene's ray reaches more than " + std::to_string(max_states) +
-                         " states, the most the derivation of its realistic model keeps"),
+                         " states leaving junctions, the most the derivation of its realistic "
+                         "model keeps"),
       max_states_(max_states) {}
 
 RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
