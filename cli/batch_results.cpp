@@ -78,6 +78,7 @@ ResultsLog::ResultsLog() = default;
 
 ResultsLog::ResultsLog(const std::string& path, bool resume)
     : standard_output_(false), path_(path) {
+    require_file_name(path, "the results");
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | (resume ? 0 : O_TRUNC), 0644);
     if (fd_ < 0)
         throw UsageError("cannot open the results file '" + path + "': " + std::strerror(errno));

@@ -114,6 +114,14 @@ private:
     }
 };
 
+void require_file_name(const std::string& path, const std::string& what) {
+    if (path.empty())
+        throw UsageError("found an empty file name for " + what + ", expected a file name");
+    if (path == "-")
+        throw UsageError("found '-' for " + what +
+                         ", expected a file name (/dev/stdout for standard output)");
+}
+
 void refuse_input_as_output(const std::string& path, const std::vector<std::string>& inputs,
                             const std::string& what) {
     struct stat target {};
@@ -129,8 +137,7 @@ void refuse_input_as_output(const std::string& path, const std::vector<std::stri
 OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& inputs,
                        const std::string& what)
     : path_(path), what_(what + " '" + path + "'") {
-    if (path.empty())
-        throw UsageError("found an empty file name for " + what + ", expected a file name");
+    require_file_name(path, what);
     refuse_input_as_output(path, inputs, what);
     struct stat target {};
     const bool exists = ::stat(path.c_str(), &target) == 0;

@@ -20,6 +20,12 @@ struct WriteError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Refuses (UsageError) an empty name and "-": inputs read "-" as standard
+// input, but an output named "-" would be a file of that name, a surprise,
+// and standard output carries the answer; /dev/stdout names it when that is
+// what is meant. `what` names the output in the message.
+void require_file_name(const std::string& path, const std::string& what);
+
 // Refuses (UsageError) an existing `path` that names the same file as one
 // of `inputs` (hard links and other spellings included): writing it would
 // destroy an input. `what` names the output in the message.
@@ -28,8 +34,8 @@ void refuse_input_as_output(const std::string& path, const std::vector<std::stri
 
 class OutputFile {
 public:
-    // Refuses (UsageError) an empty path and a path that names the same
-    // file as one of `inputs`. A target that exists and is not a regular
+    // Refuses (UsageError) what require_file_name refuses and a path that
+    // names the same file as one of `inputs`. A target that exists and is not a regular
     // file (/dev/null, /dev/full, a FIFO) is written in place: it cannot be
     // replaced by a rename, and a reader of a device sees what arrives.
     OutputFile(const std::string& path, const std::vector<std::string>& inputs,

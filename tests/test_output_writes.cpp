@@ -113,6 +113,19 @@ TEST_CASE("an output is refused when it has no name or names an input", "[output
     CHECK(run_cli("render " + quote(scene) + " -o " + quote(scene)).status == 2);
     CHECK(slurp(scene) == slurp(box)); // untouched
     CHECK(run_cli("generate box -o ''").status == 2);
+    // "-" would be a file of that name, in the working directory.
+    for (const std::string& args :
+         {"solve " + quote(scene) + " --certificate -",
+          std::string("generate box --sides 3 5 -o -"), "batch " + quote(scene) + " -o -",
+          "convert " + quote(scene) + " -"}) {
+        const auto dash = run_cli(args);
+        CHECK(dash.status == 2);
+        CHECK(dash.out.empty());
+        CHECK(dash.err.find("found '-' for the ") != std::string::npos);
+        CHECK(dash.err.find("expected a file name (/dev/stdout for standard output)") !=
+              std::string::npos);
+        CHECK(!fs::exists("-"));
+    }
 }
 
 TEST_CASE("solve with --engine graph and --certificate is a usage error, and writes nothing",
