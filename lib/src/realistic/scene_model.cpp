@@ -14,11 +14,13 @@
 #include "engine/cycle_detector.hpp"
 #include "engine/event_stepper.hpp"
 #include "engine/lattice_stepper.hpp"
+#include "realistic/kept_states.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -27,18 +29,7 @@ namespace {
 
 constexpr std::size_t source_object = 0, receiver_object = 1;
 
-// One state to walk: the segment from p along v leaves object `current`,
-// reached from `previous`, with `factor` of the event there.
-struct Item {
-    Vector p, v;
-    std::size_t previous, current;
-    Rational factor;
-    bool operator<(const Item& o) const {
-        return std::tie(p, v, previous, current, factor) <
-               std::tie(o.p, o.v, o.previous, o.current, o.factor);
-    }
-    bool operator==(const Item&) const = default;
-};
+using realistic::WalkState;
 
 // The object an event belongs to: the first element acting there, in file
 // order (a corner's elements share one event; docs say so).
@@ -52,7 +43,7 @@ std::size_t object_of(const Scene& scene, const std::vector<const Element*>& act
 class ModelBuilder {
 public:
     ModelBuilder(const Scene& scene, std::size_t target, std::size_t max_states)
-        : scene_(scene), target_(scene.targets.at(target)), max_states_(max_states) {
+        : scene_(scene), target_(scene.targets.at(target)), max_states_(max_states), kept_(scene) {
         if (engine::LatticeStepper::applies(scene))
             stepper_ = std::make_unique<engine::LatticeStepper>(scene);
         else
@@ -90,24 +81,26 @@ private:
     // leaving a junction are kept, each once, so a branch that merges into
     // one already taken ends there; between junctions the ray is
     // deterministic, and follow() keeps O(1) states however long it runs.
-    void walk(Item start) {
-        std::vector<Item> work{std::move(start)};
+    void walk(WalkState start) {
+        std::vector<std::uint32_t> work; // kept states not yet walked
+        follow(std::move(start), work);
         while (!work.empty()) {
-            Item item = std::move(work.back());
+            const std::uint32_t next = work.back();
             work.pop_back();
-            follow(std::move(item), work);
+            follow(kept_.state(next), work);
         }
     }
 
     // The stretch from `item` (engine/stretch.hpp) up to an escape, an
-    // absorption or a junction, whose unseen ways out join `work`. A
-    // stretch that never reaches one is a cycle, and Brent's method notices
-    // it. It watches whole items, not points and directions only: an item
-    // is a function of the one before, while its previous object and factor
-    // are not functions of its point and direction. Legs are sets, so the
-    // part of the cycle walked twice before the repeat is seen adds nothing.
-    void follow(Item item, std::vector<Item>& work) {
-        engine::BrentDetector<Item> cycle;
+    // absorption or a junction, whose ways out not kept before are kept and
+    // join `work`. A stretch that never reaches one is a cycle, and Brent's
+    // method notices it. It watches whole states, not points and directions
+    // only: a state is a function of the one before, while its previous
+    // object and factor are not functions of its point and direction. Legs
+    // are sets, so the part of the cycle walked twice before the repeat is
+    // seen adds nothing.
+    void follow(WalkState item, std::vector<std::uint32_t>& work) {
+        engine::BrentDetector<WalkState> cycle;
         for (std::uint64_t i = 1; !cycle.observe(item, i); ++i) {
             engine::ReferenceEvent e = stepper_->next(item.p, item.v);
             if (stepper_->passes(target_, item.p, item.v, e)) leg(item, receiver_object);
@@ -116,8 +109,8 @@ private:
             leg(item, next);
             auto leaving = [&](engine::Outgoing& out) {
                 Rational factor = engine::outgoing_factor(e.acting, item.v, out.direction);
-                return Item{e.point, std::move(out.direction), item.current, next,
-                            std::move(factor)};
+                return WalkState{e.point, std::move(out.direction), item.current, next,
+                                 std::move(factor)};
             };
             if (e.outgoing.empty()) return; // absorbed
             if (!e.junction) {
@@ -125,10 +118,10 @@ private:
                 continue;
             }
             for (engine::Outgoing& out : e.outgoing) {
-                Item branch = leaving(out);
-                if (!seen_.insert(branch).second) continue;
-                if (seen_.size() > max_states_) throw StatesExceeded(max_states_);
-                work.push_back(std::move(branch));
+                const std::optional<std::uint32_t> kept = kept_.insert(leaving(out));
+                if (!kept) continue;
+                if (kept_.size() > max_states_) throw StatesExceeded(max_states_);
+                work.push_back(*kept);
             }
             return;
         }
@@ -138,7 +131,7 @@ private:
     // triple (previous, current, to) with the factor at `current`. The same
     // triple met at several events with different factors keeps the
     // greatest, so the model never passes on less than the scene.
-    void leg(const Item& item, std::size_t to) {
+    void leg(const WalkState& item, std::size_t to) {
         if (item.current == source_object) {
             first_legs_.insert(to);
             return;
@@ -152,7 +145,7 @@ private:
     const Vector& target_;
     std::size_t max_states_;
     std::unique_ptr<engine::EventStepper> stepper_;
-    std::set<Item> seen_; // the states leaving junctions, walked or waiting
+    realistic::KeptStates kept_; // the states leaving junctions, walked or waiting
     std::set<std::size_t> first_legs_;
     std::map<std::tuple<std::size_t, std::size_t, std::size_t>, Rational> triples_;
 };
