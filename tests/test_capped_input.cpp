@@ -130,16 +130,18 @@ TEST_CASE("a directory as a scene or a certificate is bad input", "[capped_input
     CHECK_FALSE(std::filesystem::exists(dir.path("d.svg")));
 }
 
-TEST_CASE("SIGTERM while solve waits to open a FIFO: interrupted, exit 3", "[capped_input][cli]") {
+TEST_CASE("SIGTERM while solve waits for a FIFO's writer: interrupted, exit 3",
+          "[capped_input][cli]") {
     const TempDir dir;
     const std::string fifo = dir.path("scene.fifo");
     REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
     const pid_t child = spawn_cli({"solve", "--json", fifo}, dir.path("out"), dir.path("err"));
     REQUIRE(child > 0);
-    // Opening a FIFO blocks until a writer comes; none will.
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    // Reading a FIFO waits until a writer comes; none will. Once the FIFO
+    // is open, solve is waiting on it.
+    REQUIRE(wait_until_open(child, fifo));
     REQUIRE(kill(child, SIGTERM) == 0);
-    CHECK(wait_for(child) == 3);
+    CHECK(wait_at_most(child, 60) == 3);
     const nlohmann::json j = nlohmann::json::parse(slurp(dir.path("out")));
     CHECK(j["answer"] == "unknown");
     CHECK(j["limit"] == "interrupt");

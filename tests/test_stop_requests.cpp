@@ -65,20 +65,6 @@ BigBox big_box_scene(unsigned digits) {
     return box;
 }
 
-// Waits for `child` at most `seconds`; kills it (and fails) past that.
-std::optional<int> wait_at_most(pid_t child, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < end) {
-        int status = 0;
-        if (waitpid(child, &status, WNOHANG) == child)
-            return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    kill(child, SIGKILL);
-    wait_for(child);
-    return std::nullopt;
-}
-
 // Records the largest reflection count the engine reports when polled.
 class HighestPoll : public RunMonitor {
 public:
@@ -160,14 +146,17 @@ private:
 
 } // namespace
 
-TEST_CASE("SIGTERM during setup on 10^6-digit sides: exit 3, interrupt", "[stop_requests][cli]") {
+TEST_CASE("SIGTERM while 10^6-digit sides are read or set up: exit 3, interrupt",
+          "[stop_requests][cli]") {
     const TempDir dir;
     const std::string scene = big_box(dir, 1'000'000);
     // --engine lattice never finishes on this box, so the signal finds it
-    // running whenever it comes; 0.4 s in is scaling, grids or tables.
+    // running whenever it comes; 0.4 s after its handler is set, it is
+    // reading the numbers or scaling them, depending on the machine.
     const pid_t child = spawn_cli({"solve", "--json", "--engine", "lattice", scene},
                                   dir.path("out"), dir.path("err"));
     REQUIRE(child > 0);
+    REQUIRE(wait_until_catching(child, SIGTERM));
     std::this_thread::sleep_for(std::chrono::milliseconds(400));
     REQUIRE(kill(child, SIGTERM) == 0);
     const std::optional<int> status = wait_at_most(child, 60);
@@ -376,7 +365,8 @@ TEST_CASE("render, bounds and convert stop at once on a signal or --timeout, wri
         CAPTURE(signal);
         const pid_t child = spawn_cli({"render", scene, "--steps", "1000000000000", "-o", picture},
                                       dir.path("out"), dir.path("err"));
-        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        REQUIRE(wait_until_catching(child, signal));
+        std::this_thread::sleep_for(std::chrono::milliseconds(300)); // into the walk
         REQUIRE(kill(child, signal) == 0);
         const std::optional<int> status = wait_at_most(child, 30);
         REQUIRE(status);
@@ -414,7 +404,7 @@ TEST_CASE("verify, pieces, exchange, realistic and batch stop on a signal while 
         for (const int signal : {SIGINT, SIGTERM}) {
             INFO(args[0] << ", signal " << signal);
             const pid_t child = spawn_cli(args, dir.path("out"), dir.path("err"));
-            std::this_thread::sleep_for(std::chrono::milliseconds(300));
+            REQUIRE(wait_until_open(child, fifo));
             REQUIRE(kill(child, signal) == 0);
             const std::optional<int> status = wait_at_most(child, 30);
             REQUIRE(status);
@@ -452,7 +442,7 @@ TEST_CASE("a FIFO instance that never gets a writer ends at --timeout or a signa
         INFO("batch, signal " << signal);
         const pid_t child = spawn_cli({"batch", "--jobs", "2", fifo, "-o", dir.path("s.jsonl")},
                                       dir.path("out"), dir.path("err"));
-        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        REQUIRE(wait_until_open(child, fifo));
         REQUIRE(kill(child, signal) == 0);
         const std::optional<int> status = wait_at_most(child, 30);
         REQUIRE(status);

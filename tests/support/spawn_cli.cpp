@@ -2,10 +2,14 @@
 
 #include "support/test_files.hpp"
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 namespace orthoray::test {
@@ -34,6 +38,65 @@ int wait_for(pid_t child) {
     int status = 0;
     if (waitpid(child, &status, 0) != child) return -1000;
     return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+std::optional<int> wait_at_most(pid_t child, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end) {
+        int status = 0;
+        if (waitpid(child, &status, WNOHANG) == child)
+            return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    kill(child, SIGKILL);
+    wait_for(child);
+    return std::nullopt;
+}
+
+namespace {
+
+// Polls `ready` every 2 ms for at most a minute, while `child` runs.
+template <class Ready>
+bool poll_child(pid_t child, Ready ready) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+    while (std::chrono::steady_clock::now() < give_up) {
+        if (ready()) return true;
+        siginfo_t info{};
+        // An ended child is left to be reaped by the test (WNOWAIT).
+        if (::waitid(P_PID, static_cast<id_t>(child), &info, WEXITED | WNOHANG | WNOWAIT) != 0 ||
+            info.si_pid == child)
+            return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+}
+
+} // namespace
+
+bool wait_until_catching(pid_t child, int signal) {
+    const std::string status = "/proc/" + std::to_string(child) + "/status";
+    return poll_child(child, [&] {
+        std::ifstream in(status);
+        std::string line;
+        while (std::getline(in, line))
+            if (line.rfind("SigCgt:", 0) == 0)
+                return (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1) & 1) != 0;
+        return false;
+    });
+}
+
+bool wait_until_open(pid_t child, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path target = fs::canonical(path);
+    const fs::path fds = "/proc/" + std::to_string(child) + "/fd";
+    return poll_child(child, [&] {
+        std::error_code error;
+        for (const fs::directory_entry& fd : fs::directory_iterator(fds, error)) {
+            std::error_code link_error;
+            if (fs::read_symlink(fd.path(), link_error) == target) return true;
+        }
+        return false;
+    });
 }
 
 ShellResult run_shell(const std::string& script) {

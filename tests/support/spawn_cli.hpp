@@ -2,6 +2,7 @@
 // need a shell around it (pipes, ulimit, /dev/full as stdout).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <sys/types.h>
 #include <vector>
@@ -14,6 +15,20 @@ pid_t spawn_cli(const std::vector<std::string>& args, const std::string& out,
 
 // Waits for `child`: its exit status, or -signal when a signal ended it.
 int wait_for(pid_t child);
+
+// Waits for `child` at most `seconds`; kills it (and returns nullopt) past
+// that, so a program that ignores a signal fails its test, not hangs it.
+std::optional<int> wait_at_most(pid_t child, double seconds);
+
+// A test that signals a child must not signal it before it handles the
+// signal: it would die of it (exit 143 or 130), whatever the code does.
+// These poll /proc until `child` has a handler for `signal` (SigCgt in
+// /proc/PID/status), or until it holds `path` open (a link in
+// /proc/PID/fd): then it waits where the test means it to. A minute is a
+// guard that turns a hang into a failure, not a measurement; false past it
+// or when the child has ended.
+bool wait_until_catching(pid_t child, int signal);
+bool wait_until_open(pid_t child, const std::string& path);
 
 struct ShellResult {
     int status = -1;
