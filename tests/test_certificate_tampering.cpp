@@ -311,8 +311,10 @@ TEST_CASE("a certificate of a different scene is rejected", "[certificate]") {
 }
 
 TEST_CASE("a certificate is rejected when the scene changes under it", "[certificate]") {
-    // Moving any element the path touches by 1/7 along its normal axis, or
-    // the start point, invalidates the certificate.
+    // Moving the start point by 1/7, or an element the path touches along
+    // its normal axis so that the answer changes, invalidates the
+    // certificate.
+    int changed = 0;
     for (const CuratedScene& instance : curated_scenes()) {
         const Certified c = certify(instance.scene, Engine::lattice);
         INFO("instance " << instance.name);
@@ -328,6 +330,20 @@ TEST_CASE("a certificate is rejected when the scene changes under it", "[certifi
                                 "direction negated on axis " + std::to_string(axis));
             }
         }
+        // An element moved by 1/7 along its normal axis: where that changes
+        // the answer (the path touched it), the certificate must fail.
+        for (std::size_t k = 0; k < instance.scene.elements.size(); ++k) {
+            if (instance.scene.elements[k].is_diagonal()) continue;
+            Scene moved = instance.scene;
+            orthoray::Element& e = moved.elements[k];
+            e.lo[e.axis] += one_seventh;
+            e.hi[e.axis] += one_seventh;
+            const orthoray::Answer truth = orthoray::solve(moved);
+            if (truth.reason == c.answer.reason && truth.reflections == c.answer.reflections)
+                continue;
+            ++changed;
+            expect_rejected(moved, c.text, "element " + std::to_string(k + 1) + " moved");
+        }
         // With every element removed, only a zero-reflection escape or hit
         // could still hold.
         Scene empty = instance.scene;
@@ -335,4 +351,5 @@ TEST_CASE("a certificate is rejected when the scene changes under it", "[certifi
         if (c.answer.reflections != 0 || c.answer.reason == Reason::absorbed)
             expect_rejected(empty, c.text, "all elements removed");
     }
+    CHECK(changed > 10);
 }

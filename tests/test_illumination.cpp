@@ -340,6 +340,8 @@ TEST_CASE("the branch state set keeps states exactly and compactly", "[illuminat
             if (test::chance(rng, 50)) v[j] = -v[j];
         }
         if (i % 3 == 0) v = Vector{2 * v[0], 2 * v[1], 2 * v[2]}; // ray 2's class
+        // Every seventh state is one kept before, met again among the others.
+        if (i % 7 == 6) std::tie(p, v) = kept[uniform(rng, 0, static_cast<int>(kept.size()) - 1)];
         const auto at = set.insert(p, v);
         REQUIRE(at);
         if (at->added) {
@@ -350,6 +352,7 @@ TEST_CASE("the branch state set keeps states exactly and compactly", "[illuminat
         }
     }
     CHECK(set.size() == kept.size());
+    CHECK(kept.size() < 2000 - 250); // the repeats were found
     for (std::uint32_t i = 0; i < kept.size(); ++i) {
         Vector p, v;
         set.state(i, p, v);

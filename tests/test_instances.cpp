@@ -1,4 +1,5 @@
-// Every curated instance gives its expected answer with every engine.
+// Every curated instance gives its expected answer with every engine (the
+// induction simulates in 3D, docs/induction.md).
 #include "support/run_cli.hpp"
 
 #include "orthoray/parse.hpp"
@@ -19,7 +20,8 @@ TEST_CASE("instances/ give their expected answers", "[instances]") {
     for (const auto& [file, want] : expected.items()) {
         INFO(file);
         const Scene scene = load_scene(test::source_path("instances/" + file));
-        for (Engine engine : {Engine::lattice, Engine::reference, Engine::graph}) {
+        for (Engine engine : {Engine::automatic, Engine::lattice, Engine::induction,
+                              Engine::reference, Engine::graph}) {
             SolveOptions o;
             o.engine = engine;
             o.max_graph_states = 5'000'000;

@@ -63,12 +63,16 @@ TEST_CASE("reference tracer and state graph agree on random octagonal trajectori
           "[octagonal][property][slow]") {
     // Two readings of one trajectory: stepping with Brent's detector (and
     // the second pass for the tail), and breadth-first search with strong
-    // components on the graph of the states reached.
+    // components on the graph of the states reached. Both take their steps
+    // from reference_step, so what this checks is the bookkeeping of cycles,
+    // tails and counts; the step itself is checked against engines that
+    // share nothing with it (the octagonal lattice engine and induction,
+    // test_octagonal_lattice.cpp, test_octagonal_induction.cpp).
     std::mt19937_64 rng(14'001);
     test::RandomOctagonalShape shape;
     shape.one_sided_percent = 25;
     const int cases = test::case_count(5000);
-    int compared = 0, hits = 0, escapes = 0, absorbed = 0, cycles = 0, tails = 0;
+    int hits = 0, escapes = 0, absorbed = 0, cycles = 0, tails = 0;
     SolveOptions reference;
     reference.engine = Engine::reference;
     reference.max_steps = 100'000;
@@ -80,7 +84,6 @@ TEST_CASE("reference tracer and state graph agree on random octagonal trajectori
         const std::optional<StateGraphReport> g = explore_state_graph(s, 200'000);
         REQUIRE(a.decided());
         REQUIRE(g);
-        ++compared;
         CHECK(a.reason == g->answer.reason);
         CHECK(a.reflections == g->answer.reflections);
         CHECK(a.tail == g->answer.tail);
@@ -99,7 +102,6 @@ TEST_CASE("reference tracer and state graph agree on random octagonal trajectori
             tails += a.tail > 0;
         }
     }
-    CHECK(compared == cases);
     // Every outcome is common enough to be exercised.
     CHECK(hits > cases / 10);
     CHECK(escapes > cases / 50);

@@ -208,7 +208,8 @@ TEST_CASE("illumination agrees with the lattice engine run per ray and target",
     CHECK(lit > cases / 2);
 }
 
-TEST_CASE("illumination: the reference engine and the state graph agree", "[optics][property]") {
+TEST_CASE("illumination: the branch search (lattice stepper) and the state graph agree",
+          "[optics][property]") {
     std::mt19937_64 rng(1214);
     test::RandomOpticsShape shape;
     shape.scene.max_elements = 8;

@@ -40,9 +40,9 @@ std::string direction_name(const Vector& v) {
 TEST_CASE("pieces --json replays the lattice engine's path", "[pieces]") {
     std::mt19937_64 rng(24'11);
     test::RandomSceneShape shape;
-    shape.box_percent = 90;
+    shape.box_percent = 70;
     const int cases = test::case_count(300);
-    std::uint64_t replayed = 0;
+    std::uint64_t replayed = 0, escapes = 0;
     for (int i = 0; i < cases; ++i) {
         const Scene scene = test::random_scene(rng, shape);
         INFO("scene:\n" << write_scene(scene));
@@ -62,7 +62,7 @@ TEST_CASE("pieces --json replays the lattice engine's path", "[pieces]") {
         o.max_steps = 200;
         o.path = &path;
         solve(scene, o);
-        for (std::size_t s = 1; s + 1 < path.states.size(); ++s) {
+        for (std::size_t s = 1; s < path.states.size(); ++s) {
             const auto& [p, v] = path.states[s];
             Integer at[2];
             for (int j = 0; j < 2; ++j) {
@@ -89,13 +89,17 @@ TEST_CASE("pieces --json replays the lattice engine's path", "[pieces]") {
                     integer_of(r["from"]) <= u)
                     row = &r; // rows come sorted by from: the last one holds u
             REQUIRE(row != nullptr);
-            const bool last = s + 2 == path.states.size();
-            // An escape leaves no point to compare; an absorption ends the path
-            // (as may a hit, a cycle or the step cap).
+            // An escape leaves no point to compare: its state is the path's
+            // final one. Any other row has a next point, unless the path
+            // ended there for another reason (a hit, a cycle, the step cap).
+            const bool final_state = s + 1 == path.states.size();
             if ((*row)["kind"] == "escape") {
-                CHECK(last);
+                CHECK(final_state);
+                ++escapes;
                 continue;
             }
+            if (final_state) continue;
+            const bool last = s + 2 == path.states.size();
             if ((*row)["kind"] == "absorbed") CHECK(last);
             const Integer t = integer_of((*row)["t0"]) +
                               (*row)["slope"].get<int>() * (u - integer_of((*row)["from"]));
@@ -109,5 +113,7 @@ TEST_CASE("pieces --json replays the lattice engine's path", "[pieces]") {
             ++replayed;
         }
     }
-    CHECK(replayed > 5u * static_cast<unsigned>(cases)); // 3,077 at full size
+    CHECK(replayed > 5u * static_cast<unsigned>(cases)); // 2,664 at full size
+    // Seeded: 17 escapes at full size, 4 in the sanitizers' quarter.
+    CHECK(escapes > 0);
 }

@@ -121,7 +121,6 @@ TEST_CASE("engines, state graph and verifier agree on random 2D scenes", "[prope
     run_family(20261122, test::case_count(1500), rational, tally);
     run_family(424242, test::case_count(1500), integral, tally);
     WARN("2D: " << tally.summary());
-    CHECK(tally.scenes == test::case_count(1500) * 2);
     // The families must exercise every outcome and the graph cross-check.
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
         CHECK(tally.by_reason[static_cast<int>(r)] > test::case_count(100));
@@ -134,7 +133,6 @@ TEST_CASE("engines, state graph and verifier agree on random 3D scenes", "[prope
     run_family(77, test::case_count(1000), rational, tally);
     run_family(31337, test::case_count(1000), integral, tally);
     WARN("3D: " << tally.summary());
-    CHECK(tally.scenes == test::case_count(1000) * 2);
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
         CHECK(tally.by_reason[static_cast<int>(r)] > test::case_count(30));
     CHECK(tally.graph_checked > test::case_count(500));
