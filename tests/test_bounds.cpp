@@ -8,6 +8,7 @@
 #include "orthoray/state_graph.hpp"
 
 #include "lattice/lattice_scene.hpp"
+#include "support/case_count.hpp"
 #include "support/random_scene.hpp"
 
 #include <catch2/catch.hpp>
@@ -154,7 +155,7 @@ TEST_CASE("no orbit exceeds the bounds: every family", "[bounds]") {
 
 TEST_CASE("no orbit exceeds the bounds: the property tests' random scenes", "[bounds]") {
     std::mt19937_64 rng(4242);
-    for (int i = 0; i < 400; ++i) {
+    for (int i = 0; i < test::case_count(400); ++i) {
         test::RandomSceneShape shape;
         shape.dim = i % 2 ? 3 : 2;
         shape.max_denominator = i % 3 + 1;
@@ -228,7 +229,7 @@ BruteCount brute_force(const Scene& scene) {
 
 TEST_CASE("bounds equal (2D) or exceed (3D) a brute-force count of the states", "[bounds][slow]") {
     std::mt19937_64 rng(77);
-    for (int i = 0; i < 400; ++i) {
+    for (int i = 0; i < test::case_count(400); ++i) {
         test::RandomSceneShape shape;
         shape.dim = i % 2 ? 3 : 2;
         shape.max_denominator = i % 4 < 2 ? 1 : 2;
@@ -253,7 +254,8 @@ TEST_CASE("the state graph's states fit the lattice bound", "[bounds][slow]") {
     // the refined bound.
     std::mt19937_64 rng(78);
     int explored = 0;
-    for (int i = 0; i < 200; ++i) {
+    const int cases = test::case_count(200);
+    for (int i = 0; i < cases; ++i) {
         test::RandomSceneShape shape;
         shape.dim = i % 2 ? 3 : 2;
         shape.max_denominator = 1;
@@ -273,5 +275,5 @@ TEST_CASE("the state graph's states fit the lattice bound", "[bounds][slow]") {
         CHECK(Integer(static_cast<unsigned long>(graph->reachable)) <= b.refined_states);
         ++explored;
     }
-    CHECK(explored > 100);
+    CHECK(explored > cases / 2);
 }
