@@ -31,6 +31,7 @@ Answer solve_with(const Scene& scene, Engine engine, Arithmetic arithmetic = Ari
 
 struct Tally {
     int scenes = 0, induced = 0, referenced = 0; // referenced: the reference decided too
+    int capped = 0;                              // also decided under two caps
     int by_reason[5] = {};
 };
 
@@ -53,6 +54,21 @@ void check_scene(const Scene& scene, Tally& tally) {
     ++tally.scenes;
     if (induced.engine != EngineUsed::induction) return;
     ++tally.induced;
+    // A cap one below what the answer needs, and one at it: the limit the
+    // simulation reaches there, told by the induction without stepping to
+    // it (so with the induction's name), and then the answer. (A cap of 1
+    // is met on the grid, at the first reflection, before the induction.)
+    const std::uint64_t needed =
+        simulated.reflections.get_ui() + (simulated.reason == Reason::cycle ? 1 : 0);
+    if (tally.induced % 4 == 0 && needed >= 3) {
+        for (const std::uint64_t cap : {needed - 1, needed}) {
+            const Answer capped = solve_with(scene, Engine::induction, Arithmetic::automatic, cap);
+            REQUIRE(summary(capped) ==
+                    summary(solve_with(scene, Engine::lattice, Arithmetic::automatic, cap)));
+            CHECK(capped.engine == EngineUsed::induction);
+        }
+        ++tally.capped;
+    }
     tally.referenced += reference.decided();
     ++tally.by_reason[static_cast<int>(induced.reason)];
 }
@@ -87,6 +103,7 @@ TEST_CASE("induction agrees with simulation and the reference on random 2D scene
     CHECK(tally.induced == test::case_count(2000) + test::case_count(1500) +
                                test::case_count(1000) + test::case_count(500));
     CHECK(tally.referenced > tally.induced * 9 / 10);
+    CHECK(tally.capped > tally.induced / 8);
     for (Reason r : {Reason::hit, Reason::escape, Reason::absorbed, Reason::cycle})
         CHECK(tally.by_reason[static_cast<int>(r)] > test::case_count(100));
 }

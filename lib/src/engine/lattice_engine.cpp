@@ -193,7 +193,8 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                     run.stop(*decision.limit);
                     return run.answer();
                 }
-                // The answer needs more reflections than max_steps: simulate up to it.
+                // The answer needs more reflections than max_steps, and the
+                // path wants every point up to there: simulate up to it.
             }
             run.advance_in_chunks(by_table, ~std::uint64_t{0});
             return run.answer();

@@ -62,7 +62,18 @@ Decision decide_on(const lattice::LatticeScene& scene, const shoot::UniformGrid<
         // As a simulation would: it notices a cycle one reflection after the period.
         const Integer needed =
             answer.reflections + (answer.reason == Reason::cycle ? Integer(1) : Integer(0));
-        if (needed > Integer(static_cast<unsigned long>(*options.max_steps))) return decision;
+        if (needed > Integer(static_cast<unsigned long>(*options.max_steps))) {
+            // A certificate needs every point up to the limit, so the
+            // caller steps there. Without one, stepping would show no more
+            // than the induction has: the answer lies past max_steps. So
+            // the limit is the simulation's, at once, where stepping to it
+            // could take years (10^8 reflections a second, max_steps up to
+            // 2^64 - 1), as the octagonal induction does (capped()).
+            if (options.path || options.induction_observer) return decision;
+            answer.reason = Reason::limit;
+            answer.limit = Limit::steps;
+            answer.reflections = Integer(static_cast<unsigned long>(*options.max_steps));
+        }
     }
     answer.stats.induction.pieces = exchange.pieces.size();
     answer.stats.induction.states = lattice::to_integer(exchange.size);

@@ -30,13 +30,17 @@ inline std::size_t piece_cap(std::size_t elements) {
 void set_outcome(Answer& answer, const InducedOrbit& orbit);
 
 struct Decision {
-    std::optional<Answer> answer; // decided, within options.max_steps
-    std::optional<Limit> limit;   // the monitor stopped the induction
+    // Decided within options.max_steps, or (without a certificate:
+    // options.path, options.induction_observer) the limit a simulation
+    // would reach at max_steps.
+    std::optional<Answer> answer;
+    std::optional<Limit> limit; // the monitor stopped the induction
 };
 
 // Decides the run whose first reflection has been taken (`reflections` so
 // far, for the monitor). No answer and no limit means the answer needs more
-// reflections than options.max_steps allows: the caller simulates up to it.
+// reflections than options.max_steps allows and a certificate wants every
+// point up to there: the caller simulates up to it.
 // `poll` polls the monitor while the exchange is built; it throws
 // lattice::SetupStopped, which the caller catches.
 template <class Int>
