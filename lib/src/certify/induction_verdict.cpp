@@ -42,8 +42,11 @@ std::string check_verdict(const Parsed& stated, const ReplayedPiece& first) {
 }
 
 void resimulate(const Scene& scene, const Parsed& stated) {
+    // Each unit is one element tested against one segment on exact
+    // rationals, some 0.4 us: 10^7 of them stay within a few seconds, where
+    // 10^8 took 20-50 s and the check proper milliseconds.
     const Integer budget = stated.reflections * Integer(scene.elements.size() + 1);
-    if (budget > Integer(100000000)) return;
+    if (budget > Integer(10000000)) return;
     const int dim = 2;
     Vector p = scene.ray().start;
     Vector v = scene.ray().direction;

@@ -17,8 +17,9 @@ namespace orthoray::certify::induction_check {
 // L = 1; returns the "valid: ..." message, throws CheckFailure otherwise.
 std::string check_verdict(const Parsed& stated, const ReplayedPiece& first);
 
-// When the path is short, walks it with the path checker's own scan and
-// compares: a second, independent check of the same verdict.
+// When the path is short (reflections x (elements + 1) up to 10^7), walks
+// it with the path checker's own scan and compares: a second, independent
+// check of the same verdict.
 void resimulate(const Scene& scene, const Parsed& stated);
 
 } // namespace orthoray::certify::induction_check
