@@ -185,6 +185,36 @@ TEST_CASE("a stop at any poll of the setup on huge numbers ends the run cleanly"
     check_stops_at_each_poll(box.scene, options, whole, never.polls);
 }
 
+TEST_CASE("a stop among the induction's steps names the induction and how far it got",
+          "[stop_requests][induction]") {
+    // 1,000 mirrors with coordinates to 10^12: some 10^6 steps, a poll
+    // every 4096 of them, so the last few polls of a run are steps, however
+    // the setup's polls fall (they follow the clock).
+    RandomFamily family;
+    family.mirrors = 1000;
+    family.range = 1'000'000'000'000;
+    family.box = true;
+    family.seed = 17;
+    const Scene scene = generate_random(family).scene;
+    SolveOptions options;
+    options.engine = Engine::induction;
+    StopAtPoll never(0);
+    options.monitor = &never;
+    const Answer whole = solve(scene, options);
+    REQUIRE(whole.engine == EngineUsed::induction);
+    REQUIRE(whole.stats.induction.steps > 50 * 4096);
+    StopAtPoll late(never.polls - 10);
+    options.monitor = &late;
+    const Answer stopped = solve(scene, options);
+    CHECK(stopped.reason == Reason::limit);
+    CHECK(stopped.limit == Limit::interrupt);
+    CHECK(stopped.engine == EngineUsed::induction);
+    CHECK(stopped.stats.induction.pieces == whole.stats.induction.pieces);
+    CHECK(stopped.stats.induction.states == whole.stats.induction.states);
+    CHECK(stopped.stats.induction.steps > 0);
+    CHECK(stopped.stats.induction.steps < whole.stats.induction.steps);
+}
+
 TEST_CASE("the illumination search polls while it builds its lattices on huge numbers",
           "[stop_requests]") {
     // A second target, on the first segment, makes it the illumination

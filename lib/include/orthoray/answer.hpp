@@ -88,7 +88,9 @@ struct Answer {
             std::size_t two_step_pieces = 0; // their two-step table's (0 when none was built)
         } setup;
 
-        // What the induction engine did, when it decided (docs/induction.md).
+        // What the induction engine did, when it decided, or when a limit
+        // stopped it among its steps (then `rounds` is 0: not counted
+        // there) (docs/induction.md).
         struct Induction {
             std::size_t pieces = 0;   // pieces of the interval exchange
             Integer states;           // states it permutes

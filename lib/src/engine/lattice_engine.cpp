@@ -191,6 +191,10 @@ Answer run_planar(Run<Int, M, Detector>& run, const LatticeScene& ls, const Solv
                 }
                 if (decision.limit) {
                     run.stop(*decision.limit);
+                    if (decision.stopped_at) {
+                        run.answer().engine = EngineUsed::induction;
+                        run.answer().stats.induction = *decision.stopped_at;
+                    }
                     return run.answer();
                 }
                 // The answer needs more reflections than max_steps, and the

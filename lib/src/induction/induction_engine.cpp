@@ -44,10 +44,19 @@ Decision decide_on(const lattice::LatticeScene& scene, const shoot::UniformGrid<
     const ExchangeOn<Num> exchange = build_exchange_on<Num>(
         scene, grid, table, first.x, first.negative, poll, options.induction_observer != nullptr);
 
-    auto stop = [&](std::uint64_t) {
+    // A stop during the steps reports the induction's engine and how far
+    // it got, not the simulation that took the first reflection.
+    Answer::Stats::Induction progress;
+    progress.pieces = exchange.pieces.size();
+    progress.states = lattice::to_integer(exchange.size);
+    auto stop = [&](std::uint64_t steps) {
         if (!options.monitor) return false;
         decision.limit = options.monitor->poll(reflections);
-        return decision.limit.has_value();
+        if (!decision.limit) return false;
+        progress.steps = steps;
+        progress.seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+        decision.stopped_at = progress;
+        return true;
     };
     if (stop(0)) return decision; // building it takes a while on huge numbers
     const std::optional<InducedOrbit> orbit = induce(exchange, stop);

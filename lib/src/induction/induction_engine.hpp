@@ -35,6 +35,8 @@ struct Decision {
     // would reach at max_steps.
     std::optional<Answer> answer;
     std::optional<Limit> limit; // the monitor stopped the induction
+    // With `limit`, once the exchange was built: how far the induction got.
+    std::optional<Answer::Stats::Induction> stopped_at;
 };
 
 // Decides the run whose first reflection has been taken (`reflections` so
