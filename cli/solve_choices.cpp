@@ -100,7 +100,9 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
            "cross-section grid, in 2D the uniform grid and then piece tables once "
            "max(16384, 32 n) reflections have not answered; a bounding volume hierarchy when "
            "elements cluster), grid (uniform grid), bvh, pieces (2D piece tables from the "
-           "start) or section (cross-section grid)")
+           "start) or section (cross-section grid); one it cannot use is refused (exit 2): "
+           "pieces in 3D, and all but auto for the branch search of several rays or targets, "
+           "splitters or --min-intensity")
         ->check(CLI::IsMember(names(shooters)));
     cmd->add_option("--min-intensity", c.min_intensity,
                     "EPS, a natural number: is each target reached by a branch with intensity "

@@ -79,6 +79,35 @@ TEST_CASE("solve answers the illumination question target by target", "[cli][opt
     CHECK(g["targets"][2]["answer"] == "unknown");
 }
 
+TEST_CASE("a shooter asked for by name is used or refused, never replaced", "[cli][optics]") {
+    const TempDir dir;
+    // The branch search steps on each ray's lattice itself: two targets.
+    const std::string two = dir.write("two.scene", "dim 2\nmirror x 2 y 0 4\nray 0 1 1 0\n"
+                                                   "target 1 1\ntarget 9 9\n");
+    // The piece tables are 2D: a 3D box.
+    const std::string cube = dir.write("cube.scene", "dim 3\nmirror x 0 y 0 2 z 0 2\n"
+                                                     "mirror x 2 y 0 2 z 0 2\nray 1 1 1 1 0 0\n"
+                                                     "target 9 9 9\n");
+    for (const char* shooter : {"grid", "bvh", "pieces", "section"}) {
+        INFO(shooter);
+        const CliResult refused =
+            run_cli("solve --shooter " + std::string(shooter) + ' ' + quote(two));
+        CHECK(refused.status == 2);
+        CHECK(refused.out.empty());
+        CHECK(refused.err.find("takes --shooter auto") != std::string::npos);
+        const CliResult used =
+            run_cli("solve --json --shooter " + std::string(shooter) + ' ' + quote(cube));
+        if (std::string(shooter) == "pieces") {
+            CHECK(used.status == 2);
+            CHECK(used.err.find("--shooter pieces takes 2D scenes") != std::string::npos);
+        } else {
+            CHECK(used.status == 1);
+            CHECK(nlohmann::json::parse(used.out)["shooter"] == shooter);
+        }
+    }
+    CHECK(run_cli("solve --shooter auto " + quote(two)).status == 1); // target 2 unlit
+}
+
 TEST_CASE("solve reports tail and period of a rho-shaped cycle", "[cli][optics]") {
     TempDir dir;
     const std::string file = dir.write("rho.scene", rho_scene);

@@ -29,6 +29,7 @@
 #include <chrono>
 #include <new>
 #include <optional>
+#include <string>
 
 namespace orthoray::engine {
 namespace {
@@ -298,6 +299,11 @@ Answer run_with_int(const LatticeScene& ls, const SolveOptions& options) {
 } // namespace
 
 Answer solve_on_lattice(const Scene& scene, const SolveOptions& options) {
+    // Asked for by name, a shooter is used or refused, never replaced.
+    if (options.shooter == Shooter::pieces && scene.dim != 2)
+        throw UnsupportedScene("--shooter pieces takes 2D scenes (the piece tables are a 2D "
+                               "first-return map); in " +
+                               std::to_string(scene.dim) + "D --shooter grid, bvh or section does");
     LatticeScene ls;
     const auto begin = std::chrono::steady_clock::now();
     try {

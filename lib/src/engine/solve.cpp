@@ -117,6 +117,17 @@ Answer solve(const Scene& scene, const SolveOptions& options) {
         lowest.to_lowest_terms();
         return solve(lowest, options);
     }
+    // The branch searches (illumination, intensity) step on each ray's own
+    // lattice with a stepper of their own; a shooter asked for by name would
+    // be silently replaced, so it is refused.
+    const bool branch_search =
+        options.min_intensity || (!scene.single_trajectory() && options.engine != Engine::graph &&
+                                  options.engine != Engine::reference);
+    if (branch_search && options.shooter != Shooter::automatic)
+        throw UnsupportedScene("--shooter chooses how a single ray's trajectory is followed; "
+                               "the branch search of several rays or targets, splitters or "
+                               "intensities steps on each ray's lattice itself and takes "
+                               "--shooter auto (docs/optics.md)");
     // The intensity question has one search, stepping on the lattices or,
     // for --engine reference, with the rational scan (docs/intensity.md).
     if (options.min_intensity) {
