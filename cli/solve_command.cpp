@@ -81,6 +81,10 @@ void print_text(const Answer& a, const std::string& engine, double seconds) {
     std::printf("time         %.3f ms\n", seconds * 1e3);
 }
 
+double seconds_since(std::chrono::steady_clock::time_point begin) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
 // What the run reports when it stopped before an engine could say how far
 // it got (memory ran out or a signal came while reading the scene): no
 // engine ran, no reflections, and no arithmetic chosen yet.
@@ -121,12 +125,13 @@ int run(const SolveArgs& args, const CLI::Option* certificate) {
             load_scene(args.file,
                        scene_format_named(args.format)); // bad input ends here, before any output
     } catch (const std::bad_alloc&) {
-        return report(stopped_before_solving(Limit::memory), 0);
+        return report(stopped_before_solving(Limit::memory), seconds_since(begin_command));
     } catch (const ReadInterrupted&) {
+        // The time is the reading's: what the run spent before the stop.
         return report(stopped_before_solving(InterruptGuard::requested() || !past_deadline()
                                                  ? Limit::interrupt
                                                  : Limit::time),
-                      0);
+                      seconds_since(begin_command));
     }
     // The reference illumination search keeps every state and proves
     // nothing: it writes no certificate. (The intensity search with the

@@ -358,6 +358,8 @@ TEST_CASE("a --timeout while the scene's huge numbers are parsed stops the parse
     CHECK(j["limit"] == "time");
     CHECK(j["reflections"] == 0);
     CHECK(j["arithmetic"] == "none");
+    // The time spent reading, which the deadline ended: at least 0.05 s.
+    CHECK(j["seconds"].get<double>() >= 0.05);
 }
 
 TEST_CASE("the default engine on GMP-sized boxes switches to induction after steps of equal cost",
