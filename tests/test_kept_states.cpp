@@ -12,7 +12,8 @@ using realistic::WalkState;
 
 TEST_CASE("kept states: each once, every context of a point apart, decoded exactly",
           "[realistic]") {
-    const Scene scene = read_scene("dim 2\nsplitter x 2 y 1 3\nray 0 0 1 1 intensity 5\ntarget 9 9\n");
+    const Scene scene =
+        read_scene("dim 2\nsplitter x 2 y 1 3\nray 0 0 1 1 intensity 5\ntarget 9 9\n");
     KeptStates kept(scene);
     const Vector p{Rational(2), Rational(5, 3)}, q{Rational(2), Rational(7, 3)};
     const WalkState a{p, {Rational(-1), Rational(1)}, 0, 2, Rational(1, 2)};
