@@ -54,7 +54,9 @@ std::uint64_t to_u64(const Integer& x) {
 ChildResult run_exact(const Scene& scene, std::uint64_t steps, Engine engine) {
     SolveOptions options;
     options.engine = engine;
-    options.shooter = Shooter::pieces; // 2D tables from the start; the cross-section grid in 3D
+    // 2D tables from the start; the cross-section grid in 3D (which refuses
+    // the tables by name).
+    options.shooter = scene.dim == 2 ? Shooter::pieces : Shooter::section;
     options.max_steps = steps;
     const auto begin = std::chrono::steady_clock::now();
     const Answer a = solve(scene, options);

@@ -142,13 +142,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (fast.reason != slow.reason || fast.reflections != slow.reflections) std::abort();
 
     // The 2D piece tables from the first reflection, stepped in chunks the
-    // way the command line does: the same answer again.
+    // way the command line does: the same answer again. (3D refuses them;
+    // there the default shooter takes their place.)
     struct Watcher : orthoray::RunMonitor {
         std::optional<orthoray::Limit> poll(std::uint64_t) override { return std::nullopt; }
     } watcher;
     orthoray::SolveOptions tables;
     tables.max_steps = 300;
-    tables.shooter = orthoray::Shooter::pieces;
+    tables.shooter = scene.dim == 2 ? orthoray::Shooter::pieces : orthoray::Shooter::automatic;
     tables.monitor = &watcher;
     const orthoray::Answer stepped = orthoray::solve(scene, tables);
     if (stepped.reason != slow.reason || stepped.reflections != slow.reflections) std::abort();
