@@ -164,8 +164,7 @@ int run(const SolveArgs& args, const CLI::Option* certificate) {
     } catch (const std::bad_alloc&) {
         answer = stopped_before_solving(Limit::memory);
     }
-    double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    double seconds = seconds_since(begin);
     monitor.erase_progress();
     // A limit, an interrupt included, still ends the certificate properly:
     // `partial` and `end` after the last complete point.
