@@ -310,4 +310,12 @@ TEST_CASE("realistic --from-scene stops at --max-states as a limit, writing noth
     CHECK(!std::filesystem::exists(model));
     CHECK(run(states).status == 0);
     CHECK(std::filesystem::exists(model));
+    // The kept states are numbered in 32 bits: the largest cap is 2^32 - 2,
+    // and one more is refused as usage, not left to fail past 2^32 states.
+    CHECK(test::run_cli("realistic --from-scene --max-states 4294967294 " + test::quote(file))
+              .status == 0);
+    const test::CliResult beyond =
+        test::run_cli("realistic --from-scene --max-states 4294967295 " + test::quote(file));
+    CHECK(beyond.status == 2);
+    CHECK(beyond.err.find("--max-states") != std::string::npos);
 }

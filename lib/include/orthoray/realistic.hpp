@@ -82,8 +82,10 @@ struct RealisticAnswer {
 // intensity (UnsupportedScene otherwise). Deriving the model walks every
 // reachable state, keeping only those that leave a junction (a point where
 // a ray may split, docs/optics.md): past `max_states` of them it stops with
-// StatesExceeded, a limit and not bad input. A ray that never splits is
-// walked in constant memory, however long its orbit.
+// StatesExceeded, a limit and not bad input. The kept states are numbered in
+// 32 bits, so a cap above max_kept_states stops there. A ray that never
+// splits is walked in constant memory, however long its orbit.
+inline constexpr std::size_t max_kept_states = 0xffff'fffe; // 2^32 - 2
 RealisticModel realistic_model_of_scene(const Scene& scene, std::size_t target, const Integer& eps,
                                         std::size_t max_states = 1'000'000);
 

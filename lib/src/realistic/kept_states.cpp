@@ -1,6 +1,7 @@
 #include "realistic/kept_states.hpp"
 
-#include <limits>
+#include "orthoray/realistic.hpp"
+
 #include <stdexcept>
 
 namespace orthoray::realistic {
@@ -8,7 +9,7 @@ namespace orthoray::realistic {
 namespace {
 
 std::uint32_t narrow(std::size_t x) {
-    if (x >= std::numeric_limits<std::uint32_t>::max())
+    if (x > max_kept_states)
         throw std::length_error("more than 2^32 - 2 kept states");
     return static_cast<std::uint32_t>(x);
 }

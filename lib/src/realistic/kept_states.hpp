@@ -40,7 +40,8 @@ public:
     KeptStates& operator=(const KeptStates&) = delete;
 
     // Keeps s: its number, or nullopt when it was kept already. Throws
-    // std::length_error past 2^32 - 1 states (the numbering's limit).
+    // std::length_error past max_kept_states states (the numbering's
+    // limit; the model builder stops with StatesExceeded before it).
     std::optional<std::uint32_t> insert(const WalkState& s);
     std::size_t size() const { return contexts_.size(); }
     // State `number`, decoded.

@@ -43,7 +43,8 @@ std::size_t object_of(const Scene& scene, const std::vector<const Element*>& act
 class ModelBuilder {
 public:
     ModelBuilder(const Scene& scene, std::size_t target, std::size_t max_states)
-        : scene_(scene), target_(scene.targets.at(target)), max_states_(max_states), kept_(scene) {
+        : scene_(scene), target_(scene.targets.at(target)),
+          max_states_(std::min(max_states, max_kept_states)), kept_(scene) {
         if (engine::LatticeStepper::applies(scene))
             stepper_ = std::make_unique<engine::LatticeStepper>(scene);
         else
