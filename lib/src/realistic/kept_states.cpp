@@ -9,8 +9,7 @@ namespace orthoray::realistic {
 namespace {
 
 std::uint32_t narrow(std::size_t x) {
-    if (x > max_kept_states)
-        throw std::length_error("more than 2^32 - 2 kept states");
+    if (x > max_kept_states) throw std::length_error("more than 2^32 - 2 kept states");
     return static_cast<std::uint32_t>(x);
 }
 
