@@ -115,6 +115,23 @@ TEST_CASE("comments, blank lines and tabs in a certificate are ignored", "[certi
     }
 }
 
+TEST_CASE("a certificate with no statement is malformed, one cut short is invalid",
+          "[certificate]") {
+    const Scene& scene = curated_scenes().front().scene;
+    // Nothing to read: the header is missing, as in any file that does not
+    // start with it (exit 2), not a proof stopped midway (exit 1).
+    for (const std::string& text : {std::string(), std::string("\n\n# only a comment\n")}) {
+        const Outcome outcome = verify(scene, text);
+        INFO("certificate:\n" << text << "verify said: " << outcome.message);
+        CHECK(outcome.input_error);
+        CHECK(outcome.message.find("found end of file, expected 'orthoray-certificate'") !=
+              std::string::npos);
+    }
+    const Outcome header_only = verify(scene, "orthoray-certificate 1\n");
+    CHECK_FALSE(header_only.input_error);
+    CHECK(header_only.message == "invalid: incomplete certificate (no 'end' line)");
+}
+
 TEST_CASE("the graph engine does not write certificates", "[certificate]") {
     const Scene& scene = curated_scenes().front().scene;
     std::stringstream out;

@@ -61,10 +61,13 @@ TEST_CASE("a write to /dev/full is reported, exit 5", "[output_writes][cli]") {
 
 TEST_CASE("standard output on /dev/full or a closed pipe is a failed write, exit 5",
           "[output_writes][cli]") {
+    // verify prints its verdict on a certificate cut short after the header.
+    const TempDir dir;
+    const std::string cut = dir.write("cut.cert", "orthoray-certificate 1\ndim 2\n");
     for (const std::string& command : std::vector<std::string>{
-             "solve \"" + box + "\"", "verify \"" + box + "\" /dev/null", "pieces \"" + box + "\"",
-             "bounds \"" + box + "\"", "generate random --mirrors 20", "--help", "solve --help",
-             "--version"}) {
+             "solve \"" + box + "\"", "verify \"" + box + "\" \"" + cut + "\"",
+             "pieces \"" + box + "\"", "bounds \"" + box + "\"", "generate random --mirrors 20",
+             "--help", "solve --help", "--version"}) {
         CAPTURE(command);
         const ShellResult full = run_shell("$ORTHORAY " + command + " >/dev/full");
         CHECK(full.status == 5);

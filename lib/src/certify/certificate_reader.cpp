@@ -5,6 +5,7 @@
 #include "io/quoted_token.hpp"
 #include "orthoray/parse.hpp"
 
+#include <algorithm>
 #include <climits>
 
 namespace orthoray::certify {
@@ -327,7 +328,13 @@ Integer CertificateReader::count(std::size_t index) const {
 
 void CertificateReader::read_header(int dim) {
     const std::string dim_text = std::to_string(dim);
-    advance();
+    // A file cut short is a verdict (IncompleteCertificate), but one with no
+    // statement at all is no certificate: malformed, like one that starts
+    // with anything but the header.
+    if (!next())
+        throw InputError(name_, clamp_int(std::max(line_number_, 1LL)), 1,
+                         "found end of file, expected 'orthoray-certificate' (the file holds no "
+                         "statement)");
     expect("orthoray-certificate", 1, "the format version 1");
     if (token(1) != "1") fail(1, "the format version 1");
     advance();

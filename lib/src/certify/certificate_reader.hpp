@@ -53,7 +53,8 @@ public:
     void expect(std::string_view keyword, std::size_t operands, const std::string& operand) const;
 
     // Reads the two header statements, `orthoray-certificate 1` and
-    // `dim D` with D the scene's dimension, and moves past them.
+    // `dim D` with D the scene's dimension, and moves past them. A stream
+    // with no statement at all is an InputError, not IncompleteCertificate.
     void read_header(int dim);
 
     // What a statement ends with, as error messages say it.
