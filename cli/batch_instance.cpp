@@ -157,8 +157,15 @@ Outcome InstanceDecider::solve_scene(const Scene& scene, const std::string& head
     std::optional<OutputFile> file;
     std::unique_ptr<CertificateWriter> writer;
     if (!args_.certificates.empty()) {
-        file.emplace(certificate_path(args_.certificates, certificate_name),
-                     std::vector<std::string>{}, "the certificate");
+        // The batch names its certificates itself, so one it cannot create
+        // is a failed write of a result (exit 5, the lines so far kept for
+        // --resume), not the user's usage error that OutputFile reports.
+        try {
+            file.emplace(certificate_path(args_.certificates, certificate_name),
+                         std::vector<std::string>{}, "the certificate");
+        } catch (const UsageError& e) {
+            throw WriteError(e.what());
+        }
         writer = std::make_unique<CertificateWriter>(file->stream(), scene);
         writer->attach(options);
     }

@@ -14,6 +14,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <fcntl.h>
@@ -344,6 +345,40 @@ TEST_CASE("batch --certificates writes one certificate an instance, each valid",
                                           line["hash"].get<std::string>() + ".cert");
         std::istringstream in(slurp(cert));
         CHECK(verify_certificate(load_scene(path), in, cert).valid);
+    }
+}
+
+TEST_CASE("batch stops with exit 5 at a certificate it cannot write, and --resume goes on",
+          "[batch][cli]") {
+    const TempDir dir, boxes;
+    write_boxes(boxes, 4);
+    // The certificates' names, from a run that writes them all.
+    fs::create_directory(dir.path("names"));
+    REQUIRE(
+        run_cli("batch " + quote(boxes.path("")) + " --certificates " + quote(dir.path("names")))
+            .status == 0);
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir.path("names")))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    REQUIRE(names.size() == 4);
+    // A directory where the third certificate goes: it cannot be created.
+    fs::create_directories(dir.path("certs/" + names[2]));
+    const std::string out = dir.path("r.jsonl");
+    const std::string command = "batch " + quote(boxes.path("")) + " --jobs 1 -o " + quote(out) +
+                                " --certificates " + quote(dir.path("certs"));
+    const CliResult stopped = run_cli(command);
+    CHECK(stopped.status == 5);
+    CHECK(stopped.err.find("found a directory for the certificate") != std::string::npos);
+    // The two instances before it keep their lines and certificates.
+    CHECK(read_results(slurp(out)).lines.size() == 2);
+    fs::remove(dir.path("certs/" + names[2]));
+    CHECK(run_cli(command + " --resume").status == 0);
+    const Results results = read_results(slurp(out));
+    CHECK(results.lines.size() == 4);
+    for (const std::string& name : names) {
+        CAPTURE(name);
+        CHECK(slurp(dir.path("certs/" + name)) == slurp(dir.path("names/" + name)));
     }
 }
 
