@@ -204,15 +204,15 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("FAMILY", args->family,
                     "random, box, square, hallway, coprime-box, coprime-cuboid")
         ->required()
-        ->check(
-            CLI::IsMember({"random", "box", "square", "hallway", "coprime-box", "coprime-cuboid"}));
+        ->check(one_of({"random", "box", "square", "hallway", "coprime-box", "coprime-cuboid"}));
     cmd->add_option("-o,--output", args->output, "write the scene to this file (default: stdout)")
         ->check(not_empty("a file name"));
     cmd->add_option("--seed", args->seed,
                     "the seed of std::mt19937_64 for random (default 1), 0 to 2^64 - 1; the other "
                     "families are fixed by their parameters and only record it")
         ->check(whole_number_u64());
-    cmd->add_option("--dim", args->dim, "random: dimension 2 or 3 (default 2)");
+    cmd->add_option("--dim", args->dim, "random: dimension 2 or 3 (default 2)")
+        ->check(one_of({"2", "3"}));
     cmd->add_option("--mirrors", args->mirrors, "random: number of elements (default 20)");
     cmd->add_option("--absorbers", args->absorbers,
                     "random: the chance an element absorbs, a fraction like 1/10 (default 0)");
@@ -235,7 +235,7 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
         cmd->add_option("--range", args->range, "random: coordinates in [0, R] (default 1000)");
     cmd->add_option("--bits", args->bits, "random: coordinates in [0, 2^B] (instead of --range)")
         ->excludes(range)
-        ->check(CLI::Range(1, 40));
+        ->check(whole_number_in(1, 40));
     cmd->add_option("--denominator", args->denominator,
                     "random: each number is k/q with q in 1..Q (default 1: integers)");
     cmd->add_flag("--box", args->box, "random: also the closed mirror box [0, R]^dim");
@@ -254,7 +254,7 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--target", args->target,
                     "box, coprime-box, coprime-cuboid: reached (default: the corner the 45-degree "
                     "ray reaches), far (the corner opposite 0) or generic (a point never reached)")
-        ->check(CLI::IsMember({"reached", "far", "generic"}));
+        ->check(one_of({"reached", "far", "generic"}));
     cmd->add_option("--target-point", args->target_point, "box: the target point")->expected(2, 3);
     cmd->add_option("--length", args->length, "hallway: the mirrors' length L (default 1000)");
     cmd->add_option("--slope", args->slope, "hallway: the ray's slope, > 0 (default 1/10)");

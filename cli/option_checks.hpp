@@ -5,10 +5,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace orthoray::cli {
 
@@ -27,6 +29,36 @@ inline CLI::Validator whole_number_u64() {
             return "found '" + text + "', expected a whole number from 0 to " + max;
         },
         "0..2^64-1");
+}
+
+// A whole number from `least` to `most`, in plain decimal digits: CLI11's
+// Range says "Value X not in range", where every other option says what it
+// found and what it expected.
+inline CLI::Validator whole_number_in(std::uint64_t least, std::uint64_t most) {
+    return CLI::Validator(
+        [least, most](const std::string& text) -> std::string {
+            const bool plain = !text.empty() && text.size() <= 20 &&
+                               text.find_first_not_of("0123456789") == std::string::npos;
+            errno = 0;
+            const unsigned long long value = plain ? std::strtoull(text.c_str(), nullptr, 10) : 0;
+            if (plain && errno == 0 && value >= least && value <= most) return {};
+            return "found '" + text + "', expected a whole number from " + std::to_string(least) +
+                   " to " + std::to_string(most);
+        },
+        std::to_string(least) + ".." + std::to_string(most));
+}
+
+// One of `names`, spelled exactly.
+inline CLI::Validator one_of(std::vector<std::string> names) {
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    return CLI::Validator(
+        [names, list](const std::string& text) -> std::string {
+            for (const std::string& name : names)
+                if (text == name) return {};
+            return "found '" + text + "', expected one of " + list;
+        },
+        "{" + list + "}");
 }
 
 // Seconds for --timeout: a finite decimal above 0 and at most 10^9 (31

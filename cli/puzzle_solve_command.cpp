@@ -228,7 +228,7 @@ Command add_puzzle_solve(CLI::App& puzzle) {
                     "point gold when lit (as 'orthoray render' draws scenes)")
         ->check(not_empty("a file name"));
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
-        ->check(CLI::Range(1u, 1024u));
+        ->check(whole_number_in(1, 1024));
     cmd->add_flag("--mpi", args->mpi,
                   "spread the search over the ranks of 'mpirun -n P orthoray puzzle solve ... "
                   "--mpi': the same answer, printed by rank 0 (docs/puzzles.md)");

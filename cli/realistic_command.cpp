@@ -146,7 +146,7 @@ Command add_realistic(CLI::App& app) {
                     "with --from-scene: the most states leaving junctions (where the ray "
                     "may split) the derivation keeps; past them it stops, exit 3 (default "
                     "1000000, at most 4294967294)")
-        ->check(CLI::Range(std::size_t{1}, max_kept_states))
+        ->check(whole_number_in(1, max_kept_states))
         ->needs(from_scene);
     cmd->add_option("--write-model", args->write_model,
                     "with --from-scene: write the derived model to this file (then --certificate "

@@ -1,6 +1,7 @@
 // The --format option every command that reads a scene offers.
 #pragma once
 
+#include "option_checks.hpp"
 #include "orthoray/parse.hpp"
 
 #include <CLI/CLI.hpp>
@@ -33,14 +34,14 @@ inline CLI::Option* add_scene_format_option(CLI::App* cmd, std::string& format,
                 "format of " + what +
                     ": auto (default: JSON when the name ends in .json, .scene text "
                     "otherwise), scene (docs/scene-format.md) or json (docs/scene-json.md)")
-            ->check(CLI::IsMember({"auto", "scene", "json"}));
+            ->check(one_of({"auto", "scene", "json"}));
     return cmd
         ->add_option(name, format,
                      "format of " + what +
                          ": auto (default: JSON when the name ends in .json, a grid maze when it "
                          "ends in .grid, .scene text otherwise), scene (docs/scene-format.md), "
                          "json (docs/scene-json.md) or grid (docs/grid-mazes.md)")
-        ->check(CLI::IsMember({"auto", "scene", "json", "grid"}));
+        ->check(one_of({"auto", "scene", "json", "grid"}));
 }
 
 inline SceneFormat scene_format_named(const std::string& name) {

@@ -74,7 +74,7 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
                     "(reason limit, limit time) and exit 3")
         ->check(timeout_seconds());
     cmd->add_option("--max-memory", c.max_memory, max_memory_help)
-        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+        ->check(whole_number_in(1, std::uint64_t{1} << 40));
     cmd->add_option(
            "--engine", c.engine,
            "auto (default: simulate; in 2D, switch to induction once a short run has "
@@ -84,16 +84,16 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
            "(docs/induction.md); other dimensions are simulated), reference (naive rational O(n) "
            "scan per reflection, the test oracle), graph (explicit state graph; small "
            "scenes only)")
-        ->check(CLI::IsMember(names(engine_names())));
+        ->check(one_of(names(engine_names())));
     cmd->add_option("--cycle-detector", c.detector,
                     "first-state (default: compare with the state after reflection 1) or brent "
                     "(Brent's algorithm; needs no injectivity, so always used with one-sided "
                     "elements); both O(1) memory")
-        ->check(CLI::IsMember(names(detectors)));
+        ->check(one_of(names(detectors)));
     cmd->add_option("--arithmetic", c.arithmetic,
                     "auto (default: the narrowest integers a bound proves safe: int64, int128, "
                     "then GMP), int128 (at least 128-bit), or wide (always GMP)")
-        ->check(CLI::IsMember(names(arithmetics)));
+        ->check(one_of(names(arithmetics)));
     cmd->add_option(
            "--shooter", c.shooter,
            "how the lattice engine finds the next hit: auto (default: in 3D the "
@@ -103,7 +103,7 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
            "start) or section (cross-section grid); one it cannot use is refused (exit 2): "
            "pieces in 3D, and all but auto for the branch search of several rays or targets, "
            "splitters or --min-intensity")
-        ->check(CLI::IsMember(names(shooters)));
+        ->check(one_of(names(shooters)));
     cmd->add_option("--min-intensity", c.min_intensity,
                     "EPS, a natural number: is each target reached by a branch with intensity "
                     "greater than EPS? Rays carry intensities, elements reflectances and "

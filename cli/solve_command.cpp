@@ -208,7 +208,7 @@ Command add_solve(CLI::App& app) {
     cmd->add_option("--certificate-format", args->certificate_format,
                     "text (default) or jsonl: JSON Lines, one JSON object a line, for other "
                     "tools; 'verify' and 'render' read both (docs/certificates.md)")
-        ->check(CLI::IsMember({"text", "jsonl"}))
+        ->check(one_of({"text", "jsonl"}))
         ->needs(certificate);
     add_solve_choices(cmd, args->choices,
                       "let the process grow by at most MB megabytes of address space; running "

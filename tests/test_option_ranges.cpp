@@ -91,3 +91,24 @@ TEST_CASE("an empty value is refused, not read as the option left out", "[option
                      "--min-intensity requires --from-scene");
     require_rejected("realistic " + model + " --target 2", "--target requires --from-scene");
 }
+
+TEST_CASE("bounded whole numbers and named choices say what they found and expected",
+          "[option_ranges][cli]") {
+    const std::string file = quote(box);
+    for (const std::string value : {"0", "4097", "-1", "2.5", "x", "99999999999999999999999"})
+        require_rejected("batch " + file + " --jobs " + value,
+                         "--jobs: found '" + value + "', expected a whole number from 1 to 4096");
+    CHECK(run_cli("batch " + file + " --jobs 4096").status == 0);
+    CHECK(run_cli("batch " + file + " --jobs 1").status == 0);
+    require_rejected("solve " + file + " --max-memory 1099511627777",
+                     "found '1099511627777', expected a whole number from 1 to 1099511627776");
+    require_rejected("solve " + file + " --engine fast",
+                     "--engine: found 'fast', expected one of auto, graph, induction, lattice, "
+                     "reference");
+    require_rejected("solve " + file + " --format xml",
+                     "--format: found 'xml', expected one of auto, scene, json, grid");
+    require_rejected("convert " + file + " x.txt --to grid",
+                     "--to: found 'grid', expected one of auto, scene, json");
+    require_rejected("generate random --dim 4", "--dim: found '4', expected one of 2, 3");
+    require_rejected("generate maze", "found 'maze', expected one of random, box,");
+}
