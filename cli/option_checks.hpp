@@ -48,6 +48,24 @@ inline CLI::Validator whole_number_in(std::uint64_t least, std::uint64_t most) {
         std::to_string(least) + ".." + std::to_string(most));
 }
 
+// An integer in plain decimal digits, perhaps negative, that fits 64 bits;
+// the range is the library's to check (its message names the bound). Without
+// this CLI11 says "Could not convert: --mirrors = x".
+inline CLI::Validator an_integer() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            const std::size_t digits = !text.empty() && text[0] == '-' ? 1 : 0;
+            const bool plain = text.size() > digits &&
+                               text.find_first_not_of("0123456789", digits) == std::string::npos;
+            errno = 0;
+            if (plain) std::strtoll(text.c_str(), nullptr, 10);
+            return plain && errno == 0
+                       ? std::string{}
+                       : "found '" + text + "', expected a whole number from -2^63 to 2^63 - 1";
+        },
+        "");
+}
+
 // One of `names`, spelled exactly.
 inline CLI::Validator one_of(std::vector<std::string> names) {
     std::string list;

@@ -141,6 +141,7 @@ Command add_realistic(CLI::App& app) {
         ->needs(from_scene); // a model states its own eps
     cmd->add_option("--target", args->target,
                     "with --from-scene: which target is the receiver (default 1)")
+        ->check(whole_number_u64())
         ->needs(from_scene);
     cmd->add_option("--max-states", args->max_states,
                     "with --from-scene: the most states leaving junctions (where the ray "

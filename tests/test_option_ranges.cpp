@@ -111,4 +111,10 @@ TEST_CASE("bounded whole numbers and named choices say what they found and expec
                      "--to: found 'grid', expected one of auto, scene, json");
     require_rejected("generate random --dim 4", "--dim: found '4', expected one of 2, 3");
     require_rejected("generate maze", "found 'maze', expected one of random, box,");
+    // Integers whose range the library checks: CLI11 said "Could not convert".
+    for (const std::string value : {"x", "1.5", "-", "99999999999999999999"})
+        require_rejected("generate random --mirrors " + value,
+                         "--mirrors: found '" + value + "', expected a whole number from -2^63");
+    require_rejected("generate random --mirrors -1", "the number of mirrors must be in [0, 10^6]");
+    CHECK(run_cli("generate random --mirrors 3 --range 4611686018427387904").status == 0);
 }
