@@ -275,10 +275,19 @@ TEST_CASE("realistic --from-scene runs the program on a scene", "[realistic][cli
     CHECK(second.status == 2);
     CHECK(second.err.find("two.scene:3:1: found a second ray, expected one ray") !=
           std::string::npos);
-    const std::string dark = dir.write("dark.scene", "dim 2\nray 0 0 1 0\ntarget 1 0\n");
+    // The column is the ray's keyword, or its JSON object, wherever it stands.
+    const std::string dark = dir.write("dark.scene", "dim 2\n   ray 0 0 1 0\ntarget 1 0\n");
     const test::CliResult unlit = test::run_cli("realistic --from-scene " + test::quote(dark));
     CHECK(unlit.status == 2);
-    CHECK(unlit.err.find("dark.scene:2:1: found a ray without an intensity") != std::string::npos);
+    CHECK(unlit.err.find("dark.scene:2:4: found a ray without an intensity") != std::string::npos);
+    const std::string dark_json =
+        dir.write("dark.json", "{\"dim\": 2, \"elements\": [],\n \"rays\": [  {\"start\": [0, 0], "
+                               "\"direction\": [1, 0]}],\n \"targets\": [[1, 0]]}\n");
+    const test::CliResult unlit_json =
+        test::run_cli("solve --min-intensity 1 " + test::quote(dark_json));
+    CHECK(unlit_json.status == 2);
+    CHECK(unlit_json.err.find("dark.json:2:13: found a ray without an intensity") !=
+          std::string::npos);
     CHECK(test::run_cli("realistic --from-scene --certificate x " + test::quote(file)).status == 2);
 }
 

@@ -85,6 +85,7 @@ struct Ray {
     // Optional starting intensity, a natural number (docs/intensity.md);
     // only `solve --min-intensity` reads it.
     std::optional<Integer> intensity;
+    int column = 0; // of its `ray` keyword, or of its JSON object (0 likewise)
 };
 
 // A scene has at least one ray and one target; rays and targets are

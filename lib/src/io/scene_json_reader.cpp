@@ -82,6 +82,7 @@ private:
         check_keys(ray, {"start", "direction", "intensity"});
         Ray r;
         r.line = ray.line;
+        r.column = ray.column;
         r.start = point(member(ray, "start", "the start point"), "the start point");
         const JsonValue& direction = member(ray, "direction", "the direction");
         r.direction = point(direction, "the direction");

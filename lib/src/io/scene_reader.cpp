@@ -163,7 +163,7 @@ private:
         if (head.text == "mirror") return read_element(ElementKind::mirror);
         if (head.text == "absorber") return read_element(ElementKind::absorber);
         if (head.text == "splitter") return read_element(ElementKind::splitter);
-        if (head.text == "ray") return read_ray();
+        if (head.text == "ray") return read_ray(head.column);
         if (head.text == "target") return read_target();
         fail(head.column,
              "found " + quoted(head.text) +
@@ -328,9 +328,10 @@ private:
 
     // Rays and targets may each appear any number of times; they are
     // numbered from 1 in file order.
-    void read_ray() {
+    void read_ray(int column) {
         Ray ray;
         ray.line = line_;
+        ray.column = column;
         for (int j = 0; j < scene_.dim; ++j)
             ray.start[j] = take_number(std::string("the start ") + axis_name(j));
         int direction_column = next_ < tokens_.size() ? tokens_[next_].column : end_column_;
