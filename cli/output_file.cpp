@@ -122,6 +122,24 @@ void require_file_name(const std::string& path, const std::string& what) {
                          ", expected a file name (/dev/stdout for standard output)");
 }
 
+void refuse_same_output(const std::string& a, const std::string& what_a, const std::string& b,
+                        const std::string& what_b) {
+    if (a.empty() || b.empty()) return;
+    // Neither file need exist yet: compare the paths as the file system
+    // would resolve them, and existing files by device and inode.
+    std::error_code error_a, error_b;
+    const std::filesystem::path path_a = std::filesystem::weakly_canonical(a, error_a),
+                                path_b = std::filesystem::weakly_canonical(b, error_b);
+    bool same = error_a || error_b ? a == b : path_a == path_b;
+    struct stat sa {
+    }, sb{};
+    if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0)
+        same = same || same_file(sa, sb);
+    if (same)
+        throw UsageError("found " + what_b + " '" + b + "' naming the same file as " + what_a +
+                         " '" + a + "', expected another file (one would replace the other)");
+}
+
 void refuse_input_as_output(const std::string& path, const std::vector<std::string>& inputs,
                             const std::string& what) {
     struct stat target {};

@@ -32,6 +32,12 @@ void require_file_name(const std::string& path, const std::string& what);
 void refuse_input_as_output(const std::string& path, const std::vector<std::string>& inputs,
                             const std::string& what);
 
+// Refuses (UsageError) two outputs of one command that name the same file
+// (the same path in another spelling, or a hard link): the second would
+// replace the first. `what_a` and `what_b` name them in the message.
+void refuse_same_output(const std::string& a, const std::string& what_a, const std::string& b,
+                        const std::string& what_b);
+
 class OutputFile {
 public:
     // Refuses (UsageError) what require_file_name refuses and a path that

@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace orthoray::cli {
 namespace {
@@ -25,12 +27,13 @@ struct RealisticArgs {
     double timeout = 0;
 };
 
-// The model to decide: the file itself, or the one derived from a scene.
-RealisticModel model_of(const RealisticArgs& args) {
+// The usage errors of the options' combinations, before any output is
+// opened and any work done.
+void check_usage(const RealisticArgs& args) {
     if (!args.from_scene) {
         if (!args.write_model.empty())
             throw UsageError("found --write-model without --from-scene, expected --from-scene");
-        return read_realistic(read_file(args.file), args.file);
+        return;
     }
     if (!args.certificate.empty() && args.write_model.empty())
         throw UsageError("found --certificate with --from-scene, expected --write-model too (a "
@@ -39,27 +42,35 @@ RealisticModel model_of(const RealisticArgs& args) {
         args.min_intensity.find_first_not_of("0123456789") != std::string::npos)
         throw UsageError("found --min-intensity " + args.min_intensity +
                          ", expected a natural number (0, 1, 2, ...)");
+    refuse_same_output(args.write_model, "the model", args.certificate, "the certificate");
+}
+
+// The model to decide: the file itself, or the one derived from a scene.
+RealisticModel model_of(const RealisticArgs& args) {
+    if (!args.from_scene) return read_realistic(read_file(args.file), args.file);
     const Scene scene = load_scene(args.file);
     require_one_intense_ray(scene, args.file);
     if (args.target == 0 || args.target > scene.targets.size())
         throw UsageError("found --target " + std::to_string(args.target) +
                          ", expected a target of the scene (1 to " +
                          std::to_string(scene.targets.size()) + ")");
-    RealisticModel model = realistic_model_of_scene(
-        scene, args.target - 1, Integer(args.min_intensity, 10), args.max_states);
-    if (!args.write_model.empty()) {
-        OutputFile out(args.write_model, {args.file}, "the model");
-        out.stream() << write_realistic(model);
-        out.commit();
-    }
-    return model;
+    return realistic_model_of_scene(scene, args.target - 1, Integer(args.min_intensity, 10),
+                                    args.max_states);
 }
 
 int run(const RealisticArgs& args, bool timed) {
     // Files are renamed into place whole and the answer printed at the end:
     // SIGINT, SIGTERM and --timeout end the command at once with exit 3
-    // (stop_at_once.hpp), a file being written left as it was.
+    // (stop_at_once.hpp), nothing written, until the outputs are complete.
     stop_at_once(timed ? std::optional<double>(args.timeout) : std::nullopt);
+    check_usage(args);
+    // Opened before any work, so that a path that cannot be written is
+    // refused at once; written at the end, and renamed into place together.
+    std::optional<OutputFile> model_file, certificate_file;
+    if (!args.write_model.empty())
+        model_file.emplace(args.write_model, std::vector{args.file}, "the model");
+    if (!args.certificate.empty())
+        certificate_file.emplace(args.certificate, std::vector{args.file}, "the certificate");
     // The time counts the derivation too: from a scene it is most of it.
     const auto begin = std::chrono::steady_clock::now();
     RealisticModel model;
@@ -75,11 +86,13 @@ int run(const RealisticArgs& args, bool timed) {
     const RealisticAnswer answer = solve_realistic(model);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    if (!args.certificate.empty()) {
-        OutputFile out(args.certificate, {args.file}, "the certificate");
-        write_realistic_certificate(out.stream(), model, answer);
-        out.commit();
-    }
+    if (model_file) model_file->stream() << write_realistic(model);
+    if (certificate_file) write_realistic_certificate(certificate_file->stream(), model, answer);
+    // The answer is decided and written: a stop now would leave one file in
+    // place and the other not.
+    stop_no_more();
+    if (model_file) model_file->commit();
+    if (certificate_file) certificate_file->commit();
     if (args.json) {
         std::cout << "{\"answer\":" << (answer.yes ? "\"yes\"" : "\"no\"")
                   << ",\"best\":" << (answer.best < 0 ? std::string("null") : answer.best.get_str())

@@ -16,6 +16,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <vector>
 #include <sstream>
 
 namespace orthoray::cli {
@@ -231,35 +232,31 @@ void draw_branches(const Scene& scene, const RenderArgs& args, SceneRenderer& re
 // SVG is written to the target through OutputFile; PNG is converted by
 // rsvg-convert through pipes (svg_to_png.hpp) into the same OutputFile, so
 // that the target is only ever replaced whole either way.
-void write_picture(const SceneRenderer& renderer, const RenderArgs& args) {
-    OutputFile out(args.out, {args.file, args.certificate}, "the picture");
+void write_picture(const SceneRenderer& renderer, const RenderArgs& args, OutputFile& out) {
     const bool png = args.out.ends_with(".png") || args.out.ends_with(".PNG");
     if (!png) {
         renderer.write_svg(out.stream());
-        out.commit();
         return;
     }
     std::ostringstream svg;
     renderer.write_svg(svg);
     svg_to_png(svg.str(), out.stream());
-    out.commit();
 }
 
 // Segments (with their exact points) the interactive viewer keeps: a
 // browser steps through a few thousand smoothly, and memory stays bounded.
 constexpr std::size_t viewer_segments = 5000;
 
-// The interactive viewer's page (docs/render.md, "Interactive viewer"),
-// through OutputFile like every other output.
-void write_viewer(const SceneRenderer& renderer, const RenderArgs& args) {
-    OutputFile out(args.html, {args.file, args.certificate, args.out}, "the viewer page");
-    renderer.write_html(out.stream(),
-                        "orthoray: " + std::filesystem::path(args.file).filename().string());
-    out.commit();
-}
-
 int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* timeout) {
     stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
+    // Opened before any work, so that a path that cannot be written is
+    // refused at once; written at the end, and renamed into place together.
+    refuse_same_output(args.out, "the picture", args.html, "the viewer page");
+    std::optional<OutputFile> picture, page;
+    if (!args.out.empty())
+        picture.emplace(args.out, std::vector{args.file, args.certificate}, "the picture");
+    if (!args.html.empty())
+        page.emplace(args.html, std::vector{args.file, args.certificate}, "the viewer page");
     const Scene scene = load_scene(args.file, scene_format_named(args.format));
     RenderOptions look;
     if (!args.html.empty()) look.viewer_segments = viewer_segments;
@@ -316,13 +313,21 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         end = draw_first_reflections(scene, args, renderer);
     }
     if (!branches) renderer.finish(end);
-    if (!args.out.empty()) {
-        write_picture(renderer, args);
+    if (picture) write_picture(renderer, args, *picture);
+    // The interactive viewer's page (docs/render.md, "Interactive viewer").
+    if (page)
+        renderer.write_html(page->stream(),
+                            "orthoray: " + std::filesystem::path(args.file).filename().string());
+    // Everything is written: a stop now would leave one file in place and
+    // not the other.
+    stop_no_more();
+    if (picture) picture->commit();
+    if (page) page->commit();
+    if (picture) {
         std::cout << "wrote " << args.out << " (" << renderer.segments() << " segments"
                   << (renderer.thinned() ? ", thinned" : "") << ")\n";
     }
-    if (!args.html.empty()) {
-        write_viewer(renderer, args);
+    if (page) {
         std::cout << "wrote " << args.html << " (" << renderer.segments() << " segments"
                   << (renderer.segments() > viewer_segments
                           ? ", the first " + std::to_string(viewer_segments) + " in the viewer"

@@ -54,4 +54,11 @@ void stop_at_once(std::optional<double> timeout_seconds) {
     setitimer(ITIMER_REAL, &timer, nullptr);
 }
 
+void stop_no_more() {
+    sigset_t held;
+    sigemptyset(&held);
+    for (const int signal : {SIGINT, SIGTERM, SIGALRM}) sigaddset(&held, signal);
+    sigprocmask(SIG_BLOCK, &held, nullptr);
+}
+
 } // namespace orthoray::cli

@@ -97,6 +97,37 @@ TEST_CASE("ulimit -f: the certificate is not left cut, exit 5", "[output_writes]
     CHECK(leftovers(dir.path(""), {"long.scene"}).empty());
 }
 
+TEST_CASE("two outputs of one command naming the same file are refused before any work",
+          "[output_writes][cli]") {
+    const TempDir dir;
+    const std::string scene =
+        dir.write("lit.scene", "dim 2\nsplitter x 0 y 0 100 reflectance 1/2 transmittance 1/2\n"
+                               "ray 1/2 0 1 1 intensity 1000\ntarget 1/2 4\n");
+    const std::string same = dir.path("same.txt");
+    for (const std::string& other : {same, dir.path("./same.txt")}) {
+        const auto realistic =
+            run_cli("realistic --from-scene " + quote(scene) + " --write-model " + quote(same) +
+                    " --certificate " + quote(other));
+        CHECK(realistic.status == 2);
+        CHECK(realistic.out.empty());
+        CHECK(realistic.err.find("naming the same file as the model") != std::string::npos);
+        const auto render =
+            run_cli("render " + quote(scene) + " -o " + quote(same) + " --html " + quote(other));
+        CHECK(render.status == 2);
+        CHECK(render.err.find("naming the same file as the picture") != std::string::npos);
+    }
+    CHECK_FALSE(fs::exists(same));
+    // An output that cannot be created is found before the work, and the
+    // other output is not left behind.
+    const std::string model = dir.path("m.realistic");
+    const auto missing = run_cli("realistic --from-scene " + quote(scene) + " --write-model " +
+                                 quote(model) + " --certificate " + quote(dir.path("no/c.cert")));
+    CHECK(missing.status == 2);
+    CHECK(missing.err.find("cannot write the certificate") != std::string::npos);
+    CHECK_FALSE(fs::exists(model));
+    CHECK(leftovers(dir.path(""), {"lit.scene"}).empty());
+}
+
 TEST_CASE("an output is refused when it has no name or names an input", "[output_writes][cli]") {
     const TempDir dir;
     const std::string scene = dir.write("box.scene", slurp(box));
