@@ -57,7 +57,7 @@ TEST_CASE("malformed scene files: status 2, no stdout, one FILE:LINE:COL line", 
         {"axes.scene", "dim 3\nmirror x 0 z 0 1 y 0 1\n", 2, 12,
          "found 'z', expected 'y' (the other axes, in the order x, y, z)"},
         {"nul.scene", std::string("dim 2\nray 0 0\0 1 1\n", 15), 2, 8,
-         "found byte 0x00, expected plain ASCII text"},
+         "found byte 0x00, expected printable ASCII text"},
         {"no-target.scene", "dim 2\nray 0 0 1 1\n", 3, 1,
          "found end of file, expected a 'target' statement"},
     };

@@ -143,7 +143,7 @@ TEST_CASE("bad grids give one message at the offending place", "[grid][reader]")
                                     "or \\ (mirrors), # (block)"},
         {"beam left 0\ngrid\n.\x80\n", "m.grid:3:2: found byte 0x80, expected a cell: . (empty), "
                                        "/ or \\ (mirrors), # (block)"},
-        {"beam left 0 \x01\n", "m.grid:1:13: found byte 0x01, expected plain ASCII text"},
+        {"beam left 0 \x01\n", "m.grid:1:13: found byte 0x01, expected printable ASCII text"},
         {"beam up 0\n", "m.grid:1:6: found 'up', expected a side: left, right, top or bottom"},
         {"beam left\n", "m.grid:1:10: found end of line, expected a row number (0 for the top "
                         "row)"},

@@ -220,25 +220,25 @@ std::vector<Malformed> malformed_cases() {
          "found end of file, expected a 'target' statement"},
 
         // Bytes that are not plain text.
-        {"NUL byte", "dim 2\nray 0 \0 1 1\n"s, 2, 7, "found byte 0x00, expected plain ASCII text"},
+        {"NUL byte", "dim 2\nray 0 \0 1 1\n"s, 2, 7, "found byte 0x00, expected printable ASCII text"},
         {"NUL byte in a comment", "dim 2 # \0\n"s, 1, 9,
-         "found byte 0x00, expected plain ASCII text"},
-        {"control byte", "dim 2\n\x01\x02\n", 2, 1, "found byte 0x01, expected plain ASCII text"},
+         "found byte 0x00, expected printable ASCII text"},
+        {"control byte", "dim 2\n\x01\x02\n", 2, 1, "found byte 0x01, expected printable ASCII text"},
         {"DEL byte", "dim 2\nmirror x 0 y 0 1\x7f\n", 2, 17,
-         "found byte 0x7F, expected plain ASCII text"},
+         "found byte 0x7F, expected printable ASCII text"},
         {"stray CR inside a line", "dim 2\rray 0 0 1 1\n", 1, 6,
-         "found byte 0x0D, expected plain ASCII text"},
-        {"form feed", "dim 2\n\f\n", 2, 1, "found byte 0x0C, expected plain ASCII text"},
+         "found byte 0x0D, expected printable ASCII text"},
+        {"form feed", "dim 2\n\f\n", 2, 1, "found byte 0x0C, expected printable ASCII text"},
         {"UTF-8 outside a comment", "dim 2\nray 0 0 1 1 \xC3\xA9\n", 2, 13,
-         "found byte 0xC3, expected plain ASCII text"},
+         "found byte 0xC3, expected printable ASCII text"},
         {"UTF-8 byte order mark",
          "\xEF\xBB\xBF"
          "dim 2\n",
-         1, 1, "found byte 0xEF, expected plain ASCII text"},
+         1, 1, "found byte 0xEF, expected printable ASCII text"},
         {"binary header",
          "\x7F"
          "ELF\x02\x01\x01",
-         1, 1, "found byte 0x7F, expected plain ASCII text"},
+         1, 1, "found byte 0x7F, expected printable ASCII text"},
     };
 }
 

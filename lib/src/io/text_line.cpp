@@ -11,7 +11,7 @@ std::optional<BadByte> find_bad_byte(std::string_view line, std::size_t comment)
         const bool foreign = c >= 0x80 && i < comment; // UTF-8 is fine inside comments
         if (control || foreign) {
             char buf[64];
-            std::snprintf(buf, sizeof buf, "found byte 0x%02X, expected plain ASCII text", c);
+            std::snprintf(buf, sizeof buf, "found byte 0x%02X, expected printable ASCII text", c);
             return BadByte{static_cast<int>(i) + 1, buf};
         }
     }

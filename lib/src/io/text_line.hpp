@@ -18,7 +18,7 @@ struct Token {
 
 // A byte that has no place in a text line: a control character other than
 // a tab, DEL, or (before `comment`, where UTF-8 is fine) a non-ASCII byte.
-// The message is the reader's "found byte 0x.., expected plain ASCII text".
+// The message is the reader's "found byte 0x.., expected printable ASCII text".
 struct BadByte {
     int column;
     std::string message;
