@@ -80,6 +80,15 @@ TEST_CASE("the dialects of the public files and the issue read alike", "[puzzle]
     CHECK(plain.height == 2);
     CHECK(plain.blocks == std::array<int, 3>{1, 1, 0});
     CHECK(grid_text(plain) == "GRID START\no o x\nA B C\nGRID STOP\n");
+    // A UTF-8 byte order mark before the first line is skipped; its three
+    // bytes still count in the columns. Elsewhere it is a foreign byte.
+    check_same(read_lazor_level("\xEF\xBB\xBFGRID START\no o x\nA B C\nGRID STOP\nA 1\nB 1\n"
+                                "L 0 1 1 1\nP 6 3\n"),
+               plain);
+    CHECK_THROWS_WITH(read_lazor_level("\xEF\xBB\xBFGRID BEGIN\n", "f.bff"),
+                      Catch::Contains("f.bff:1:9: found"));
+    CHECK_THROWS_WITH(read_lazor_level("GRID START\n\xEF\xBB\xBFo o\n", "f.bff"),
+                      Catch::Contains("f.bff:2:1: found byte 0xEF"));
     // A count of zero is a count.
     CHECK(read_lazor_level("GRID START\no o\nGRID STOP\nB 0\nL 1 0 1 1\nP 1 2\n").blocks ==
           std::array<int, 3>{0, 0, 0});
@@ -160,7 +169,7 @@ TEST_CASE("bad levels name the place and what was expected", "[puzzle][reader]")
          "f.bff:5:1: found a second GRID START (the grid starts on line 1), expected one grid"},
         {grid + "L 1 0 1 1 7\nP 1 2\n", "f.bff:5:11: found '7', expected end of line"},
         {"GRID START\no \xc3\xa9\nGRID STOP\n",
-         "f.bff:2:3: found byte 0xC3, expected plain ASCII text"},
+         "f.bff:2:3: found byte 0xC3, expected printable ASCII text"},
         {"", "f.bff:1:1: found end of file, expected a grid: GRID START, rows of cells (o x A B "
              "C), GRID STOP"},
     };
