@@ -117,6 +117,7 @@ int search_level(const PuzzleSolveArgs& args, const CLI::Option* max_nodes, std:
     const InterruptGuard interrupts;
     const LazorLevel level = load_lazor_level(args.level); // bad input ends here
     // Refuse a bad output path before searching.
+    refuse_same_output(args.out, "the solved level", args.picture, "the picture");
     std::optional<OutputFile> out;
     if (!args.out.empty())
         out.emplace(args.out, std::vector<std::string>{args.level}, "the solved level");

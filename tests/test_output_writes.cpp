@@ -116,6 +116,11 @@ TEST_CASE("two outputs of one command naming the same file are refused before an
         CHECK(render.status == 2);
         CHECK(render.err.find("naming the same file as the picture") != std::string::npos);
     }
+    const auto puzzle =
+        run_cli("puzzle solve " + quote(instance("puzzles/reflect-4x4.bff")) + " -o " +
+                quote(same) + " --render " + quote(dir.path("./same.txt")));
+    CHECK(puzzle.status == 2);
+    CHECK(puzzle.err.find("naming the same file as the solved level") != std::string::npos);
     CHECK_FALSE(fs::exists(same));
     // An output that cannot be created is found before the work, and the
     // other output is not left behind.
