@@ -116,5 +116,11 @@ TEST_CASE("bounded whole numbers and named choices say what they found and expec
         require_rejected("generate random --mirrors " + value,
                          "--mirrors: found '" + value + "', expected a whole number from -2^63");
     require_rejected("generate random --mirrors -1", "the number of mirrors must be in [0, 10^6]");
+    // -1 wrapped to 2^64 - 1, and 0x9 read as hex, before.
+    for (const std::string value : {"-1", "0x1", "''"})
+        require_rejected("realistic --from-scene --target " + value + " " + file,
+                         "--target: found '");
+    require_rejected("realistic --from-scene --max-states 0x9 " + file,
+                     "--max-states: found '0x9', expected a whole number from 1 to 4294967294");
     CHECK(run_cli("generate random --mirrors 3 --range 4611686018427387904").status == 0);
 }
