@@ -16,8 +16,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <vector>
 #include <sstream>
+#include <vector>
 
 namespace orthoray::cli {
 namespace {

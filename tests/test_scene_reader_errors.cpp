@@ -220,10 +220,12 @@ std::vector<Malformed> malformed_cases() {
          "found end of file, expected a 'target' statement"},
 
         // Bytes that are not plain text.
-        {"NUL byte", "dim 2\nray 0 \0 1 1\n"s, 2, 7, "found byte 0x00, expected printable ASCII text"},
+        {"NUL byte", "dim 2\nray 0 \0 1 1\n"s, 2, 7,
+         "found byte 0x00, expected printable ASCII text"},
         {"NUL byte in a comment", "dim 2 # \0\n"s, 1, 9,
          "found byte 0x00, expected printable ASCII text"},
-        {"control byte", "dim 2\n\x01\x02\n", 2, 1, "found byte 0x01, expected printable ASCII text"},
+        {"control byte", "dim 2\n\x01\x02\n", 2, 1,
+         "found byte 0x01, expected printable ASCII text"},
         {"DEL byte", "dim 2\nmirror x 0 y 0 1\x7f\n", 2, 17,
          "found byte 0x7F, expected printable ASCII text"},
         {"stray CR inside a line", "dim 2\rray 0 0 1 1\n", 1, 6,
