@@ -28,13 +28,16 @@ int run(const ConvertArgs& args, const CLI::Option* timeout) {
         throw UsageError("found OUT '" + args.out +
                          "', expected a name for a .scene or JSON scene, or --to scene|json (a "
                          "scene is not written back as a grid maze)");
+    // Opened before the reading, which is the long part: a path that
+    // cannot be written is refused at once.
+    OutputFile out(args.out, {args.in}, "the scene");
     progress.phase("reading " + args.in);
     const Scene scene = load_scene(args.in, scene_format_named(args.from));
     const bool json = to == SceneFormat::json;
     progress.phase("writing " + args.out);
     const std::string text = json ? write_scene_json(scene) : write_scene(scene);
-    OutputFile out(args.out, {args.in}, "the scene");
     out.stream() << text;
+    stop_no_more(); // written: the rename and the exit finish whatever comes now
     out.commit();
     progress.finish();
     return yes;

@@ -105,6 +105,7 @@ int generate(const PuzzleGenerateArgs& args, const LazorPieceRunner* runner) {
     const std::string text = write_lazor_level(made->level, title);
     if (out) {
         out->stream() << text;
+        stop_no_more(); // written: the rename and the exit finish whatever comes now
         out->commit();
     } else {
         std::cout << text;

@@ -34,6 +34,7 @@ int run(const PuzzleSceneArgs& args, const CLI::Option* timeout) {
     if (!args.placement.empty()) inputs.push_back(args.placement);
     OutputFile out(args.out, inputs, "the scene");
     out.stream() << text;
+    stop_no_more(); // written: the rename and the exit finish whatever comes now
     out.commit();
     return yes;
 }

@@ -130,6 +130,12 @@ TEST_CASE("two outputs of one command naming the same file are refused before an
     CHECK(missing.status == 2);
     CHECK(missing.err.find("cannot write the certificate") != std::string::npos);
     CHECK_FALSE(fs::exists(model));
+    // convert checks its output before the reading (a 10^6-digit scene reads
+    // for seconds): here the input does not even exist.
+    const auto convert =
+        run_cli("convert " + quote(dir.path("absent.scene")) + " " + quote(dir.path("no/x.json")));
+    CHECK(convert.status == 2);
+    CHECK(convert.err.find("cannot write the scene") != std::string::npos);
     CHECK(leftovers(dir.path(""), {"lit.scene"}).empty());
 }
 
