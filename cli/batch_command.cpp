@@ -122,7 +122,7 @@ Command add_batch(CLI::App& app) {
         ->needs(generate);
     cmd->add_option("--jobs,-j", args->jobs,
                     "threads (default: every core; under --mpi, one a rank)")
-        ->check(whole_number_in(1, 4096));
+        ->transform(whole_number_in(1, 4096));
     CLI::Option* output =
         cmd->add_option("-o,--output", args->output,
                         "append the results to this file (default: standard output)")

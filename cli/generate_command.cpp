@@ -210,11 +210,11 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--seed", args->seed,
                     "the seed of std::mt19937_64 for random (default 1), 0 to 2^64 - 1; the other "
                     "families are fixed by their parameters and only record it")
-        ->check(whole_number_u64());
+        ->transform(whole_number_u64());
     cmd->add_option("--dim", args->dim, "random: dimension 2 or 3 (default 2)")
         ->check(one_of({"2", "3"}));
     cmd->add_option("--mirrors", args->mirrors, "random: number of elements (default 20)")
-        ->check(an_integer());
+        ->transform(an_integer());
     cmd->add_option("--absorbers", args->absorbers,
                     "random: the chance an element absorbs, a fraction like 1/10 (default 0)");
     cmd->add_option("--splitters", args->splitters,
@@ -229,28 +229,28 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--rays", args->rays,
                     "random: the number of rays, 1 to 1000 (default 1), each a random start and "
                     "direction")
-        ->check(an_integer());
+        ->transform(an_integer());
     cmd->add_option("--targets", args->targets,
                     "random: the number of targets, 1 to 1000 (default 1), random points; "
                     "--target-after needs 1 ray, 1 target and no splitters")
-        ->check(an_integer());
+        ->transform(an_integer());
     CLI::Option* range =
         cmd->add_option("--range", args->range, "random: coordinates in [0, R] (default 1000)")
-            ->check(an_integer());
+            ->transform(an_integer());
     cmd->add_option("--bits", args->bits, "random: coordinates in [0, 2^B] (instead of --range)")
         ->excludes(range)
-        ->check(whole_number_in(1, 40));
+        ->transform(whole_number_in(1, 40));
     cmd->add_option("--denominator", args->denominator,
                     "random: each number is k/q with q in 1..Q (default 1: integers)")
-        ->check(an_integer());
+        ->transform(an_integer());
     cmd->add_flag("--box", args->box, "random: also the closed mirror box [0, R]^dim");
     cmd->add_option("--target-after", args->target_after,
                     "random: the target is the midpoint of the segment after K reflections (the "
                     "answer is then known: yes); without it, a random point")
-        ->check(an_integer());
+        ->transform(an_integer());
     cmd->add_option("--direction-size", args->direction_size,
                     "random: direction components are nonzero integers in [-D, D] (default 10)")
-        ->check(an_integer());
+        ->transform(an_integer());
     cmd->add_option("--sides", args->sides, "box: 2 or 3 positive integer sides (default 3 5)")
         ->expected(2, 3);
     cmd->add_option("--start", args->start, "box: the start point (default the corner 0)")
@@ -267,7 +267,7 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--slope", args->slope, "hallway: the ray's slope, > 0 (default 1/10)");
     cmd->add_option("--k", args->k,
                     "coprime-box, coprime-cuboid: the sides' bit size k (default 4)")
-        ->check(an_integer());
+        ->transform(an_integer());
     return cmd;
 }
 

@@ -9,59 +9,67 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace orthoray::cli {
 
-// A whole number from 0 to 2^64 - 1, in plain decimal digits.
-inline CLI::Validator whole_number_u64() {
-    return CLI::Validator(
-        [](const std::string& text) -> std::string {
-            const std::string max = "18446744073709551615";
-            const std::size_t first = text.find_first_not_of('0');
-            const std::string digits = first == std::string::npos ? "0" : text.substr(first);
-            const bool plain =
-                !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-            if (plain &&
-                (digits.size() < max.size() || (digits.size() == max.size() && digits <= max)))
-                return {};
-            return "found '" + text + "', expected a whole number from 0 to " + max;
-        },
-        "0..2^64-1");
+// CLI11 reads an integer option with strtoull(text, base 0), so "010" would
+// be octal 8 and "08" would not convert. The numeric validators below
+// therefore rewrite the text they accept to plain decimal without leading
+// zeros, and must be added with Option::transform: Option::check makes a
+// validator read-only.
+
+// `text` without the leading zeros of its digits (a lone "0" kept), from
+// position `from` on, or "" when it holds anything but digits there.
+inline std::string decimal_digits(const std::string& text, std::size_t from = 0) {
+    if (text.size() <= from || text.find_first_not_of("0123456789", from) != std::string::npos)
+        return {};
+    const std::size_t first = text.find_first_not_of('0', from);
+    return first == std::string::npos ? "0" : text.substr(first);
 }
 
-// A whole number from `least` to `most`, in plain decimal digits: CLI11's
-// Range says "Value X not in range", where every other option says what it
-// found and what it expected.
+// A whole number from `least` to `most`, in decimal digits. (CLI11's Range
+// says "Value X not in range", where every other option says what it found
+// and what it expected.)
 inline CLI::Validator whole_number_in(std::uint64_t least, std::uint64_t most) {
     return CLI::Validator(
-        [least, most](const std::string& text) -> std::string {
-            const bool plain = !text.empty() && text.size() <= 20 &&
-                               text.find_first_not_of("0123456789") == std::string::npos;
+        [least, most](std::string& text) -> std::string {
+            const std::string digits = decimal_digits(text);
+            const bool fits = !digits.empty() && digits.size() <= 20;
             errno = 0;
-            const unsigned long long value = plain ? std::strtoull(text.c_str(), nullptr, 10) : 0;
-            if (plain && errno == 0 && value >= least && value <= most) return {};
+            const unsigned long long value = fits ? std::strtoull(digits.c_str(), nullptr, 10) : 0;
+            if (fits && errno == 0 && value >= least && value <= most) {
+                text = digits;
+                return {};
+            }
             return "found '" + text + "', expected a whole number from " + std::to_string(least) +
                    " to " + std::to_string(most);
         },
         std::to_string(least) + ".." + std::to_string(most));
 }
 
-// An integer in plain decimal digits, perhaps negative, that fits 64 bits;
-// the range is the library's to check (its message names the bound). Without
+// Any whole number a 64-bit unsigned integer holds.
+inline CLI::Validator whole_number_u64() {
+    return whole_number_in(0, std::numeric_limits<std::uint64_t>::max());
+}
+
+// An integer in decimal digits, perhaps negative, that fits 64 bits; the
+// range is the library's to check (its message names the bound). Without
 // this CLI11 says "Could not convert: --mirrors = x".
 inline CLI::Validator an_integer() {
     return CLI::Validator(
-        [](const std::string& text) -> std::string {
-            const std::size_t digits = !text.empty() && text[0] == '-' ? 1 : 0;
-            const bool plain = text.size() > digits &&
-                               text.find_first_not_of("0123456789", digits) == std::string::npos;
+        [](std::string& text) -> std::string {
+            const bool negative = !text.empty() && text[0] == '-';
+            const std::string digits = decimal_digits(text, negative ? 1 : 0);
+            const std::string value = negative && digits != "0" ? "-" + digits : digits;
             errno = 0;
-            if (plain) std::strtoll(text.c_str(), nullptr, 10);
-            return plain && errno == 0
-                       ? std::string{}
-                       : "found '" + text + "', expected a whole number from -2^63 to 2^63 - 1";
+            if (!digits.empty()) std::strtoll(value.c_str(), nullptr, 10);
+            if (digits.empty() || errno != 0)
+                return "found '" + text + "', expected a whole number from -2^63 to 2^63 - 1";
+            text = value;
+            return {};
         },
         "");
 }

@@ -152,22 +152,23 @@ Command add_puzzle_generate(CLI::App& puzzle) {
     cmd->add_option("--blocks", args->blocks,
                     "the blocks to place, like A3,C1: A reflect, B opaque, C refract (default A3)");
     cmd->add_option("--lasers", args->lasers, "lasers, entering from the grid's sides (default 1)")
-        ->check(whole_number_in(1, 16));
+        ->transform(whole_number_in(1, 16));
     cmd->add_option("--points", args->points, "points to light (default 3)")
-        ->check(whole_number_in(1, 64));
+        ->transform(whole_number_in(1, 64));
     cmd->add_option("--difficulty", args->difficulty,
                     "only levels whose solution count takes this many search nodes:\n"
                     "easy (0-99), medium (100-999), hard (1000 and more)")
         ->check(one_of({"easy", "medium", "hard"}));
     cmd->add_flag("--any", args->any, "keep levels with more than one solution too");
-    cmd->add_option("--seed", args->seed, "the random seed (default 1)")->check(whole_number_u64());
+    cmd->add_option("--seed", args->seed, "the random seed (default 1)")
+        ->transform(whole_number_u64());
     cmd->add_option("--attempts", args->attempts,
                     "candidate levels to try before giving up (default 500)")
-        ->check(whole_number_in(1, 1000000));
+        ->transform(whole_number_in(1, 1000000));
     cmd->add_option("--max-nodes", args->max_nodes,
                     "search nodes for each search on a candidate level: for another\n"
                     "solution, and to count its solutions (default 50000)")
-        ->check(whole_number_in(1, std::uint64_t{1} << 40));
+        ->transform(whole_number_in(1, std::uint64_t{1} << 40));
     cmd->add_option("-o,--output", args->out, "write the level here instead of to stdout")
         ->check(not_empty("a file name"));
     cmd->add_flag("--mpi", args->mpi,

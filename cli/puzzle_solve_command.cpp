@@ -229,7 +229,7 @@ Command add_puzzle_solve(CLI::App& puzzle) {
                     "point gold when lit (as 'orthoray render' draws scenes)")
         ->check(not_empty("a file name"));
     cmd->add_option("--jobs", args->jobs, "threads (default: one per core)")
-        ->check(whole_number_in(1, 1024));
+        ->transform(whole_number_in(1, 1024));
     cmd->add_flag("--mpi", args->mpi,
                   "spread the search over the ranks of 'mpirun -n P orthoray puzzle solve ... "
                   "--mpi': the same answer, printed by rank 0 (docs/puzzles.md)");
@@ -242,7 +242,7 @@ Command add_puzzle_solve(CLI::App& puzzle) {
     CLI::Option* max_nodes =
         cmd->add_option("--max-nodes", args->max_nodes,
                         "visit at most N search nodes; without an answer by then, exit 3")
-            ->check(whole_number_u64());
+            ->transform(whole_number_u64());
     cmd->add_flag("--quiet", args->quiet,
                   "no progress line (it is drawn on a terminal after a second: nodes, rate, "
                   "time)");

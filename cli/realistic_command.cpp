@@ -154,13 +154,13 @@ Command add_realistic(CLI::App& app) {
         ->needs(from_scene); // a model states its own eps
     cmd->add_option("--target", args->target,
                     "with --from-scene: which target is the receiver (default 1)")
-        ->check(whole_number_u64())
+        ->transform(whole_number_u64())
         ->needs(from_scene);
     cmd->add_option("--max-states", args->max_states,
                     "with --from-scene: the most states leaving junctions (where the ray "
                     "may split) the derivation keeps; past them it stops, exit 3 (default "
                     "1000000, at most 4294967294)")
-        ->check(whole_number_in(1, max_kept_states))
+        ->transform(whole_number_in(1, max_kept_states))
         ->needs(from_scene);
     cmd->add_option("--write-model", args->write_model,
                     "with --from-scene: write the derived model to this file (then --certificate "

@@ -375,7 +375,7 @@ Command add_render(CLI::App& app) {
                         "draw the path's first N reflections (default 1000), and its last "
                         "segment when it ends by then, or for branches at most N states; the "
                         "caption's answer is decided as 'solve' decides it")
-            ->check(whole_number_in(1, 1'000'000'000'000));
+            ->transform(whole_number_in(1, 1'000'000'000'000));
     add_scene_format_option(cmd, args->format);
     CLI::Option* timeout = add_timeout_option(cmd, args->timeout, "the drawing");
     cmd->add_flag("--quiet", args->quiet,

@@ -68,13 +68,13 @@ void add_solve_choices(CLI::App* cmd, SolveChoices& c, const std::string& max_me
         cmd->add_option("--max-steps", c.max_steps,
                         "perform at most N reflections; without an answer by then, answer unknown "
                         "(reason limit) and exit 3")
-            ->check(whole_number_u64());
+            ->transform(whole_number_u64());
     cmd->add_option("--timeout", c.timeout,
                     "stop after SECONDS (a decimal, counted from the start) with answer unknown "
                     "(reason limit, limit time) and exit 3")
         ->check(timeout_seconds());
     cmd->add_option("--max-memory", c.max_memory, max_memory_help)
-        ->check(whole_number_in(1, std::uint64_t{1} << 40));
+        ->transform(whole_number_in(1, std::uint64_t{1} << 40));
     cmd->add_option(
            "--engine", c.engine,
            "auto (default: simulate; in 2D, switch to induction once a short run has "
