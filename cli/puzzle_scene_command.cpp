@@ -22,20 +22,25 @@ struct PuzzleSceneArgs {
 
 int run(const PuzzleSceneArgs& args, const CLI::Option* timeout) {
     stop_at_once(timeout->count() > 0 ? std::optional<double>(args.timeout) : std::nullopt);
+    // The output is opened first, so that a path it cannot be written to is
+    // refused before any reading, as by every other command.
+    std::optional<OutputFile> out;
+    if (!args.out.empty()) {
+        std::vector<std::string> inputs{args.level};
+        if (!args.placement.empty()) inputs.push_back(args.placement);
+        out.emplace(args.out, inputs, "the scene");
+    }
     LazorLevel level = load_lazor_level(args.level);
     if (!args.placement.empty())
         level = apply_lazor_placement(level, load_lazor_level(args.placement), args.placement);
     const std::string text = write_scene(lazor_scene(level));
-    if (args.out.empty()) {
+    if (!out) {
         std::cout << text;
         return yes;
     }
-    std::vector<std::string> inputs{args.level};
-    if (!args.placement.empty()) inputs.push_back(args.placement);
-    OutputFile out(args.out, inputs, "the scene");
-    out.stream() << text;
+    out->stream() << text;
     stop_no_more(); // written: the rename and the exit finish whatever comes now
-    out.commit();
+    out->commit();
     return yes;
 }
 
