@@ -138,7 +138,7 @@ TEST_CASE("two outputs of one command naming the same file are refused before an
     CHECK(convert.err.find("cannot write the scene") != std::string::npos);
     // So does puzzle scene.
     const auto scene_of = run_cli("puzzle scene " + quote(dir.path("absent.bff")) + " -o " +
-                                quote(dir.path("no/x.scene")));
+                                  quote(dir.path("no/x.scene")));
     CHECK(scene_of.status == 2);
     CHECK(scene_of.err.find("cannot write the scene") != std::string::npos);
     CHECK(leftovers(dir.path(""), {"lit.scene"}).empty());
