@@ -266,8 +266,9 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--length", args->length, "hallway: the mirrors' length L (default 1000)");
     cmd->add_option("--slope", args->slope, "hallway: the ray's slope, > 0 (default 1/10)");
     cmd->add_option("--k", args->k,
-                    "coprime-box, coprime-cuboid: the sides' bit size k (default 4)")
-        ->transform(an_integer());
+                    "coprime-box, coprime-cuboid: the sides' bit size k (default 4; "
+                    "coprime-cuboid from 2)")
+        ->transform(whole_number_in(1, 4096));
     return cmd;
 }
 

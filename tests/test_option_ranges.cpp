@@ -104,6 +104,9 @@ TEST_CASE("bounded whole numbers and named choices say what they found and expec
     require_rejected("convert " + file + " x.txt --to grid",
                      "--to: found 'grid', expected one of auto, scene, json");
     require_rejected("generate random --dim 4", "--dim: found '4', expected one of 2, 3");
+    // --k was unsigned behind an integer check: CLI11 said "Could not convert".
+    require_rejected("generate coprime-box --k -3",
+                     "--k: found '-3', expected a whole number from 1 to 4096");
     require_rejected("generate maze", "found 'maze', expected one of random, box,");
     // Integers whose range the library checks: CLI11 said "Could not convert".
     for (const std::string value : {"x", "1.5", "-", "99999999999999999999"})
