@@ -111,6 +111,7 @@ Command add_bounds(CLI::App& app) {
         progress.phase("computing the bounds");
         const StateBounds b = compute_bounds(scene, !args->no_pieces);
         progress.finish();
+        stop_no_more(); // decided: a stop now would cut the printing short
         if (args->json)
             print_json(b);
         else

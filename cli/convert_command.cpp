@@ -36,8 +36,10 @@ int run(const ConvertArgs& args, const CLI::Option* timeout) {
     const bool json = to == SceneFormat::json;
     progress.phase("writing " + args.out);
     const std::string text = json ? write_scene_json(scene) : write_scene(scene);
+    // Decided: a stop from here on would cut the bytes short where the
+    // target is written in place (/dev/stdout, a pipe), so the command finishes.
+    stop_no_more();
     out.stream() << text;
-    stop_no_more(); // written: the rename and the exit finish whatever comes now
     out.commit();
     progress.finish();
     return yes;

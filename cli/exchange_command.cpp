@@ -49,6 +49,7 @@ Command add_exchange(CLI::App& app) {
                              "fit the induction's cap (docs/induction.md)");
         std::ostringstream out; // whole or nothing on stdout
         write_exchange(*exchange, out, *json ? ExchangeFormat::json : ExchangeFormat::text);
+        stop_no_more(); // decided: a stop now would cut the printing short
         std::cout << out.str();
         return static_cast<int>(yes);
     };

@@ -54,6 +54,33 @@ bool same_file(const struct stat& a, const struct stat& b) {
     return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
+// The path a file is written at once its symbolic links are followed (the
+// path itself when it is no link), so that the link stays and the file it
+// names is replaced. A link to something other than a regular file (a
+// device, a pipe: /dev/stdout) is kept, since such a target is written in
+// place through it. A chain that ends nowhere is followed link by link, so
+// that the file is created where the last link points; when a link cannot
+// be read, creating the file fails there (/dev/stdout with standard output
+// closed ends at /proc/self/fd/1, which no one can create), where renaming
+// over the first link would have replaced it.
+std::filesystem::path followed(std::filesystem::path path) {
+    struct stat info {};
+    if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return path;
+    std::error_code error;
+    if (::stat(path.c_str(), &info) == 0) {
+        if (!S_ISREG(info.st_mode)) return path;
+        const std::filesystem::path real = std::filesystem::canonical(path, error);
+        return error ? path : real;
+    }
+    for (int hops = 0; hops < 40; ++hops) {
+        if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return path;
+        const std::filesystem::path next = std::filesystem::read_symlink(path, error);
+        if (error) return path;
+        path = next.is_absolute() ? next : path.parent_path() / next;
+    }
+    return path;
+}
+
 } // namespace
 
 // Buffers writes to a file descriptor; a failed write(2) throws WriteError,
@@ -127,9 +154,13 @@ void refuse_same_output(const std::string& a, const std::string& what_a, const s
     if (a.empty() || b.empty()) return;
     // Neither file need exist yet: compare the paths as the file system
     // would resolve them, and existing files by device and inode.
+    // (weakly_canonical leaves a relative path relative when no part of it
+    // exists yet: "y.svg" and "./y.svg" would differ; hence absolute first.)
     std::error_code error_a, error_b;
-    const std::filesystem::path path_a = std::filesystem::weakly_canonical(a, error_a),
-                                path_b = std::filesystem::weakly_canonical(b, error_b);
+    const std::filesystem::path path_a = std::filesystem::weakly_canonical(
+                                    std::filesystem::absolute(followed(a)), error_a),
+                                path_b = std::filesystem::weakly_canonical(
+                                    std::filesystem::absolute(followed(b)), error_b);
     bool same = error_a || error_b ? a == b : path_a == path_b;
     struct stat sa {
     }, sb{};
@@ -152,19 +183,31 @@ void refuse_input_as_output(const std::string& path, const std::vector<std::stri
     }
 }
 
-OutputFile::OutputFile(const std::string& path, const std::vector<std::string>& inputs,
+OutputFile::OutputFile(const std::string& given, const std::vector<std::string>& inputs,
                        const std::string& what)
-    : path_(path), what_(what + " '" + path + "'") {
-    require_file_name(path, what);
-    refuse_input_as_output(path, inputs, what);
+    : what_(what + " '" + given + "'") {
+    require_file_name(given, what);
+    refuse_input_as_output(given, inputs, what);
+    path_ = followed(given).string();
+    const std::string& path = path_;
     struct stat target {};
     const bool exists = ::stat(path.c_str(), &target) == 0;
     if (exists) {
         if (S_ISDIR(target.st_mode))
             throw UsageError("found a directory for " + what_ + ", expected a file name");
     }
+    // Standard output named as a file (/dev/stdout, /dev/fd/1, or the file
+    // it is redirected to) is written through the descriptor the shell
+    // opened: a rename would drop what `>>` appends to, and a fresh open
+    // would start at its beginning.
+    struct stat standard_output {};
+    const bool is_standard_output = exists && ::fstat(STDOUT_FILENO, &standard_output) == 0 &&
+                                    same_file(standard_output, target);
     int fd = -1;
-    if (exists && !S_ISREG(target.st_mode)) {
+    if (is_standard_output) {
+        fd = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 0);
+        if (fd < 0) cannot_create(errno);
+    } else if (exists && !S_ISREG(target.st_mode)) {
         fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd < 0) cannot_create(errno);
     } else {

@@ -43,7 +43,9 @@ public:
     // Refuses (UsageError) what require_file_name refuses and a path that
     // names the same file as one of `inputs`. A target that exists and is not a regular
     // file (/dev/null, /dev/full, a FIFO) is written in place: it cannot be
-    // replaced by a rename, and a reader of a device sees what arrives.
+    // replaced by a rename, and a reader of a device sees what arrives. A
+    // symbolic link is followed: the file it names is replaced and the link
+    // stays (renaming over the link would replace the link itself).
     OutputFile(const std::string& path, const std::vector<std::string>& inputs,
                const std::string& what);
     // Removes the temporary file unless commit() ran.

@@ -50,6 +50,7 @@ Command add_pieces(CLI::App& app) {
             throw UsageError("piece tables exist only for 2D scenes whose ray moves in both x and "
                              "y; '" +
                              *file + "' is not one");
+        stop_no_more(); // decided: a stop now would cut the printing short
         std::cout << out.str();
         return static_cast<int>(yes);
     };

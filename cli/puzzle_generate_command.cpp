@@ -103,9 +103,11 @@ int generate(const PuzzleGenerateArgs& args, const LazorPieceRunner* runner) {
         "difficulty " + lazor_difficulty_name(made->nodes) + " (" + std::to_string(made->nodes) +
         " search nodes to count the solutions)";
     const std::string text = write_lazor_level(made->level, title);
+    // Decided: a stop from here on would cut the bytes short where they go
+    // out in place (standard output, /dev/stdout), so the command finishes.
+    stop_no_more();
     if (out) {
         out->stream() << text;
-        stop_no_more(); // written: the rename and the exit finish whatever comes now
         out->commit();
     } else {
         std::cout << text;

@@ -34,12 +34,14 @@ int run(const PuzzleSceneArgs& args, const CLI::Option* timeout) {
     if (!args.placement.empty())
         level = apply_lazor_placement(level, load_lazor_level(args.placement), args.placement);
     const std::string text = write_scene(lazor_scene(level));
+    // Decided: a stop from here on would cut the bytes short where they go
+    // out in place (standard output, /dev/stdout), so the command finishes.
+    stop_no_more();
     if (!out) {
         std::cout << text;
         return yes;
     }
     out->stream() << text;
-    stop_no_more(); // written: the rename and the exit finish whatever comes now
     out->commit();
     return yes;
 }

@@ -86,11 +86,11 @@ int run(const RealisticArgs& args, bool timed) {
     const RealisticAnswer answer = solve_realistic(model);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    // The answer is decided: a stop from here on would leave one file in
+    // place and the other not, or cut short one written in place (/dev/stdout).
+    stop_no_more();
     if (model_file) model_file->stream() << write_realistic(model);
     if (certificate_file) write_realistic_certificate(certificate_file->stream(), model, answer);
-    // The answer is decided and written: a stop now would leave one file in
-    // place and the other not.
-    stop_no_more();
     if (model_file) model_file->commit();
     if (certificate_file) certificate_file->commit();
     if (args.json) {

@@ -21,10 +21,10 @@ CLI::Option* add_timeout_option(CLI::App* cmd, double& seconds, const std::strin
 void stop_at_once(std::optional<double> timeout_seconds);
 
 // From here on SIGINT, SIGTERM and the timer are held back until the process
-// ends, so they no longer stop it: called once the answer is decided and its
-// outputs are written to their temporary files, just before they are renamed
-// into place. A stop then would leave some outputs in place and exit 3, where
-// the promise is nothing written; the command finishes instead.
+// ends, so they no longer stop it: called once the answer is decided, before
+// the result is printed or the outputs are renamed into place. A stop then
+// would cut the printing short or leave some outputs in place, with exit 3,
+// where the promise is nothing written; the command finishes instead.
 void stop_no_more();
 
 } // namespace orthoray::cli

@@ -23,6 +23,7 @@ struct VerifyArgs {
 // The verdict as text ("valid: hit, 6 reflections") or one JSON object
 // {"valid": ..., "message": ...}; the exit status says the same.
 int report(const VerifyArgs& args, bool valid, const std::string& message) {
+    stop_no_more(); // decided: a stop now would cut the printing short
     if (args.json)
         std::cout << nlohmann::json{{"valid", valid}, {"message", message}}.dump() << '\n';
     else

@@ -240,3 +240,74 @@ TEST_CASE("a full file system: the write error is reported and the old file kept
     CHECK(leftovers(mount, {"c.cert"}).empty());
     run_shell("umount \"" + mount + "\"");
 }
+
+TEST_CASE("an output through a symbolic link replaces the file it names, never the link",
+          "[output_writes][cli]") {
+    const TempDir dir;
+    const std::string scene = run_cli("convert " + quote(box) + " /dev/stdout").out;
+    REQUIRE(scene.starts_with("dim 2\n"));
+    // A link to a file: the file is replaced, the link stays.
+    const std::string target = dir.write("target.scene", "old\n");
+    const std::string link = dir.path("link.scene");
+    fs::create_symlink("target.scene", link);
+    CHECK(run_cli("convert " + quote(box) + " " + quote(link)).status == 0);
+    CHECK(fs::is_symlink(link));
+    CHECK(slurp(target) == scene);
+    // A link to no file yet: the file is created where it points.
+    fs::create_directory(dir.path("sub"));
+    const std::string ahead = dir.path("ahead.scene");
+    fs::create_symlink("sub/new.scene", ahead);
+    CHECK(run_cli("convert " + quote(box) + " " + quote(ahead)).status == 0);
+    CHECK(fs::is_symlink(ahead));
+    CHECK(slurp(dir.path("sub/new.scene")) == scene);
+    // A link into a closed descriptor, as /dev/stdout is with standard
+    // output closed: refused, where a file was once renamed over the link.
+    const std::string closed = dir.path("stdout");
+    fs::create_symlink("/proc/self/fd/1", closed);
+    const ShellResult r =
+        run_shell("$ORTHORAY convert " + quote(box) + " " + quote(closed) + " >&-");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("cannot write the scene") != std::string::npos);
+    CHECK(fs::read_symlink(closed) == "/proc/self/fd/1");
+    // /dev/stdout redirected to a file goes through the shell's descriptor,
+    // so `>>` appends instead of the file being replaced.
+    const std::string log = dir.write("log.txt", "first\n");
+    CHECK(run_shell("$ORTHORAY convert " + quote(box) + " /dev/stdout >> " + quote(log)).status ==
+          0);
+    CHECK(slurp(log) == "first\n" + scene);
+    CHECK(leftovers(dir.path(""),
+                    {"target.scene", "link.scene", "sub", "ahead.scene", "stdout", "log.txt"})
+              .empty());
+}
+
+TEST_CASE("two outputs that will be one new file, in two spellings, are refused",
+          "[output_writes][cli]") {
+    // "y.svg" and "./y.svg" resolved differently while neither existed.
+    const TempDir dir;
+    const ShellResult r = run_shell("cd " + quote(dir.path("")) + " && $ORTHORAY render " +
+                                    quote(box) + " -o y.svg --html ./y.svg");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("naming the same file as the picture") != std::string::npos);
+    CHECK(leftovers(dir.path(""), {}).empty());
+}
+
+TEST_CASE("a stop while the result is printed lets it finish: all of it or nothing",
+          "[output_writes][cli]") {
+    // exchange prints its whole result at the end. Its reader here waits a
+    // second before reading, so the command sits in a write to a full pipe
+    // when SIGTERM comes; it used to end there, exit 3 with 64 KiB printed.
+    const TempDir dir;
+    const std::string scene =
+        dir.write("r.scene", run_cli("generate random --dim 2 --mirrors 2000 --box --bits 30").out);
+    const std::size_t whole = run_cli("exchange " + quote(scene) + " --json").out.size();
+    REQUIRE(whole > 256 * 1024);
+    const std::string fifo = dir.path("fifo"), count = dir.path("count");
+    const ShellResult r =
+        run_shell("mkfifo " + quote(fifo) + "; $ORTHORAY exchange " + quote(scene) + " --json > " +
+                  quote(fifo) + " & pid=$!; exec 3< " + quote(fifo) +
+                  "; sleep 1; kill -TERM $pid; " + "wc -c <&3 > " + quote(count) + "; wait $pid");
+    const std::size_t printed = std::stoul(slurp(count));
+    INFO("status " << r.status << ", " << printed << " of " << whole << " bytes");
+    // Under a slow build the signal may still come while it computes.
+    CHECK(((r.status == 0 && printed == whole) || (r.status == 3 && printed == 0)));
+}
