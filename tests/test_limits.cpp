@@ -5,6 +5,7 @@
 #include "support/run_cli.hpp"
 
 #include "orthoray/certificate.hpp"
+#include "orthoray/exchange.hpp"
 #include "orthoray/generate.hpp"
 #include "orthoray/parse.hpp"
 #include "orthoray/scene.hpp"
@@ -175,6 +176,39 @@ TEST_CASE("a monitor stops each simulation engine with the reflections it perfor
             CHECK(verdict.message.find("partial") != std::string::npos);
             CHECK(verdict.message.find(answer.reflections.get_str()) != std::string::npos);
         }
+    }
+}
+
+TEST_CASE("a stop while a certificate lists the exchange leaves no exchange cut short",
+          "[limits]") {
+    // A box with 20,000-digit sides: its exchange's listing (every number
+    // in decimal) runs to some 260 kB; at 10^6 digits it takes seconds.
+    const std::string side = "1" + std::string(20000, '0');
+    const Scene scene = read_scene("dim 2\nmirror x 0 y 0 " + side + "\nmirror x " + side +
+                                   " y 0 " + side + "\nmirror y 0 x 0 " + side + "\nmirror y " +
+                                   side + " x 0 " + side + "\nray 1 0 1 1\ntarget 0 1\n");
+    const std::optional<IntervalExchange> exchange = exchange_of(scene);
+    REQUIRE(exchange);
+    for (const bool stop : {false, true}) {
+        CAPTURE(stop);
+        std::ostringstream text;
+        CertificateWriter writer(text, scene);
+        SolveOptions options;
+        writer.attach(options);
+        REQUIRE(options.induction_observer);
+        int asked = 0;
+        const bool whole = options.induction_observer->begin(*exchange, [&] {
+            ++asked;
+            return stop;
+        });
+        // Asked while it lists, at the first 64 KiB: the stop lands inside.
+        CHECK(asked >= 1);
+        CHECK(whole == !stop);
+        // Stopped, nothing of the exchange is written, not even its method:
+        // the certificate stays a path prefix, which verify reads as partial.
+        CHECK((text.str().find("method induction\n") != std::string::npos) == !stop);
+        CHECK((text.str().find("\npiece ") != std::string::npos) == !stop);
+        if (!stop) CHECK(text.str().size() > 200'000);
     }
 }
 

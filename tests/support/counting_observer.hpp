@@ -16,10 +16,11 @@ public:
     std::size_t pieces = 0;
     Integer states;
     std::uint64_t steps = 0, rounds = 0;
-    void begin(const IntervalExchange& exchange) override {
+    bool begin(const IntervalExchange& exchange, const std::function<bool()>&) override {
         ++begun;
         pieces = exchange.pieces.size();
         states = exchange.size;
+        return true;
     }
     void top(std::size_t, std::size_t) override { ++steps; }
     void bottom(std::size_t, std::size_t) override { ++steps; }

@@ -24,6 +24,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <vector>
@@ -112,7 +113,13 @@ void write_exchange(const IntervalExchange& exchange, std::ostream& out, Exchang
 class InductionObserver {
 public:
     virtual ~InductionObserver() = default;
-    virtual void begin(const IntervalExchange&) {}
+    // The exchange, before the steps. Taking it in may be long (a
+    // certificate writes every number in decimal: seconds at 10^6 digits),
+    // so an observer asks `stopped` now and then and returns false as soon as
+    // it says true, having kept nothing; the run then ends with that limit.
+    virtual bool begin(const IntervalExchange&, const std::function<bool()>& /*stopped*/) {
+        return true;
+    }
     virtual void top(std::size_t /*d*/, std::size_t /*r*/) {}
     virtual void bottom(std::size_t /*r*/, std::size_t /*d*/) {}
     virtual void equal(std::size_t /*r*/, std::size_t /*d*/) {}

@@ -9,8 +9,10 @@
 #include "orthoray/exchange.hpp"
 
 #include <cstring>
+#include <functional>
 #include <initializer_list>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,28 +24,31 @@ class CertificateWriter::InductionSection : public InductionObserver {
 public:
     InductionSection(CertificateWriter& writer) : writer_(writer) {}
 
-    void begin(const IntervalExchange& exchange) override {
-        writer_.induced_ = true;
+    // The listing of the exchange goes to memory first and out only when
+    // whole: a stop during it (10^6-digit numbers take seconds to write in
+    // decimal) leaves the certificate a path prefix, which verify reads as a
+    // partial path certificate, where an exchange cut short would be invalid.
+    bool begin(const IntervalExchange& exchange, const std::function<bool()>& stopped) override {
+        std::ostringstream listing;
+        sink_ = &listing;
+        stopped_ = &stopped;
         const bool octagonal = !exchange.lifted.empty();
+        if (octagonal)
+            octagonal_exchange(exchange);
+        else
+            axis_exchange(exchange);
+        sink_ = &writer_.out_;
+        stopped_ = nullptr;
+        if (cut_) return false;
+        writer_.induced_ = true;
         statement("method", {octagonal ? "octagonal-induction" : "induction"}, false);
         std::ostream& out = writer_.out_;
         const bool json = writer_.format_ == CertificateFormat::jsonl;
         out << (json ? "{\"direction\": " : "direction");
         writer_.write_vector(writer_.first_reflection_direction_);
         out << (json ? "}\n" : "\n");
-        if (octagonal) {
-            octagonal_exchange(exchange);
-            return;
-        }
-        statement("scale", {exchange.scale[0].get_str(), exchange.scale[1].get_str()});
-        statement("modulus", {exchange.modulus.get_str()}, false);
-        for (const Transversal& t : exchange.transversals)
-            statement("transversal",
-                      {std::to_string(t.axis), t.offset.get_str(), t.lo.get_str(), t.hi.get_str(),
-                       (t.negative & 1u) ? "-1" : "1", (t.negative & 2u) ? "-1" : "1"});
-        statement("first",
-                  {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
-        write_pieces(exchange);
+        out << listing.view();
+        return true;
     }
     void walk_search(const Integer& from, const std::optional<Integer>& only) override {
         if (only)
@@ -67,14 +72,29 @@ public:
     }
 
 private:
+    void axis_exchange(const IntervalExchange& exchange) {
+        statement("scale", {exchange.scale[0].get_str(), exchange.scale[1].get_str()});
+        statement("modulus", {exchange.modulus.get_str()}, false);
+        for (const Transversal& t : exchange.transversals) {
+            if (cut_) return;
+            statement("transversal",
+                      {std::to_string(t.axis), t.offset.get_str(), t.lo.get_str(), t.hi.get_str(),
+                       (t.negative & 1u) ? "-1" : "1", (t.negative & 2u) ? "-1" : "1"});
+        }
+        statement("first",
+                  {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
+        write_pieces(exchange);
+    }
     // docs/induction-certificates.md, "Octagonal scenes": one scale, the
     // lifted transversals as lattice points, x and its twin.
     void octagonal_exchange(const IntervalExchange& exchange) {
         statement("scale", {exchange.scale[0].get_str()}, false);
-        for (const LiftedTransversal& t : exchange.lifted)
+        for (const LiftedTransversal& t : exchange.lifted) {
+            if (cut_) return;
             statement("lifted",
                       {t.x0.get_str(), t.y0.get_str(), t.step_x.get_str(), t.step_y.get_str(),
                        t.count.get_str(), t.dx.get_str(), t.dy.get_str()});
+        }
         statement("first",
                   {std::to_string(exchange.first_transversal), exchange.first_index.get_str()});
         if (exchange.twin_transversal)
@@ -87,6 +107,7 @@ private:
     void write_pieces(const IntervalExchange& exchange) {
         auto cut = exchange.cuts.begin();
         for (const ExchangePiece& p : exchange.pieces) {
+            if (cut_) return;
             while (cut != exchange.cuts.end() && cut->first < p.start) ++cut;
             const bool is_cut = cut != exchange.cuts.end() && cut->first == p.start;
             const char* kind = is_cut                         ? "cut"
@@ -111,7 +132,20 @@ private:
     }
     void statement(const char* keyword, const std::vector<std::string>& operands,
                    bool array = true) {
-        std::ostream& out = writer_.out_;
+        std::ostream& out = *sink_;
+        if (cut_) return;
+        if (stopped_) {
+            // During the listing: asked every 64 KiB written, a millisecond
+            // or so, and at every statement of 10^5-digit numbers.
+            const std::streamoff at = out.tellp();
+            if (at - asked_at_ >= (std::streamoff{1} << 16)) {
+                asked_at_ = at;
+                if ((*stopped_)()) {
+                    cut_ = true;
+                    return;
+                }
+            }
+        }
         if (writer_.format_ == CertificateFormat::text) {
             out << keyword;
             for (const std::string& x : operands) out << ' ' << x;
@@ -128,6 +162,10 @@ private:
     }
 
     CertificateWriter& writer_;
+    std::ostream* sink_ = &writer_.out_;             // where statements go
+    const std::function<bool()>* stopped_ = nullptr; // set during begin()
+    std::streamoff asked_at_ = 0;                    // the sink's size when last asked
+    bool cut_ = false;                               // begin() was stopped
 };
 
 CertificateWriter::CertificateWriter(std::ostream& out, const Scene& scene,

@@ -47,7 +47,7 @@ std::optional<IntervalExchange> exchange_of(const Scene& scene) {
 }
 
 InducedOrbit induce(const IntervalExchange& exchange, InductionObserver* observer) {
-    if (observer) observer->begin(exchange);
+    if (observer) observer->begin(exchange, [] { return false; });
     return *induction::induce(exchange, observer, nullptr);
 }
 

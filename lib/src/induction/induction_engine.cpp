@@ -92,7 +92,7 @@ Decision decide_on(const lattice::LatticeScene& scene, const shoot::UniformGrid<
         // Run again, streaming the steps: an observer (a certificate) only
         // gets them once the answer is known to stand (within max_steps).
         const IntervalExchange shown = to_public(exchange);
-        observer->begin(shown);
+        if (!observer->begin(shown, [&] { return stop(0); })) return decision;
         if (!induce(shown, observer, stop)) return decision;
     }
     answer.stats.induction.seconds = std::chrono::duration<double>(Clock::now() - begin).count();

@@ -199,7 +199,7 @@ bool stream_walk(const RhoMap& map, const RhoOrbit& rho, const OctagonalLayout& 
     IntervalExchange listed = to_public(map.listed);
     add_lattice_states(listed, layout, scale);
     listed.cuts = map.cuts;
-    observer.begin(listed);
+    if (!observer.begin(listed, [&] { return stop(0); })) return false;
     for (const RhoSearch& search : rho.proof) {
         observer.walk_search(search.from, search.only);
         if (!induce(to_public(search_exchange(map, search)), &observer, stop)) return false;
@@ -303,7 +303,7 @@ std::optional<Answer> solve_on(const Scene& scene, const SolveOptions& options) 
         visit_prefix();
         if (InductionObserver* observer = options.induction_observer) {
             add_lattice_states(exchange, *layout, s.scale);
-            observer->begin(exchange);
+            if (!observer->begin(exchange, [&] { return stop(0); })) return limited(*limit);
             if (!induce(exchange, observer, stop)) return limited(*limit);
             if (twin_search) {
                 observer->twin_search();
