@@ -32,6 +32,8 @@ public:
         std::ostringstream listing;
         sink_ = &listing;
         stopped_ = &stopped;
+        asked_at_ = 0;
+        cut_ = false;
         const bool octagonal = !exchange.lifted.empty();
         if (octagonal)
             octagonal_exchange(exchange);
