@@ -81,6 +81,27 @@ std::filesystem::path followed(std::filesystem::path path) {
     return path;
 }
 
+// Whether `path` names standard output itself: /dev/stdout, /dev/fd/1 or
+// /proc/self/fd/1, or a link that leads through one of them. Only such a
+// name is written through descriptor 1; the file standard output happens to
+// be redirected to, named as itself, is replaced as any file is (else what
+// the command prints would land inside it).
+bool names_standard_output(std::filesystem::path path) {
+    for (int hops = 0; hops < 40; ++hops) {
+        const std::filesystem::path name = path.lexically_normal();
+        if (name == "/dev/stdout" || name == "/dev/fd/1" || name == "/proc/self/fd/1" ||
+            name == "/proc/" + std::to_string(::getpid()) + "/fd/1")
+            return true;
+        struct stat info {};
+        if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return false;
+        std::error_code error;
+        const std::filesystem::path next = std::filesystem::read_symlink(path, error);
+        if (error) return false;
+        path = next.is_absolute() ? next : path.parent_path() / next;
+    }
+    return false;
+}
+
 } // namespace
 
 // Buffers writes to a file descriptor; a failed write(2) throws WriteError,
@@ -196,13 +217,14 @@ OutputFile::OutputFile(const std::string& given, const std::vector<std::string>&
         if (S_ISDIR(target.st_mode))
             throw UsageError("found a directory for " + what_ + ", expected a file name");
     }
-    // Standard output named as a file (/dev/stdout, /dev/fd/1, or the file
-    // it is redirected to) is written through the descriptor the shell
-    // opened: a rename would drop what `>>` appends to, and a fresh open
-    // would start at its beginning.
-    struct stat standard_output {};
-    const bool is_standard_output = exists && ::fstat(STDOUT_FILENO, &standard_output) == 0 &&
-                                    same_file(standard_output, target);
+    // A link still, yet no file: a loop, or a chain too long to follow.
+    // Creating the file would replace the link.
+    struct stat link {};
+    if (!exists && ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) cannot_create(ELOOP);
+    // Standard output named as such (/dev/stdout) is written through the
+    // descriptor the shell opened: a rename would drop what `>>` appends to,
+    // and a fresh open would start at its beginning.
+    const bool is_standard_output = exists && names_standard_output(given);
     int fd = -1;
     if (is_standard_output) {
         fd = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 0);

@@ -35,10 +35,16 @@ public:
         asked_at_ = 0;
         cut_ = false;
         const bool octagonal = !exchange.lifted.empty();
-        if (octagonal)
-            octagonal_exchange(exchange);
-        else
-            axis_exchange(exchange);
+        try {
+            if (octagonal)
+                octagonal_exchange(exchange);
+            else
+                axis_exchange(exchange);
+        } catch (...) { // the sink must not outlive `listing`
+            sink_ = &writer_.out_;
+            stopped_ = nullptr;
+            throw;
+        }
         sink_ = &writer_.out_;
         stopped_ = nullptr;
         if (cut_) return false;
