@@ -13,6 +13,7 @@
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace orthoray::cli {
 namespace {
@@ -54,6 +55,23 @@ bool same_file(const struct stat& a, const struct stat& b) {
     return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
+// The paths a chain of symbolic links passes through: `path`, then each
+// link's target in turn, up to the first that is no link or cannot be read
+// (at most 40 links, as the kernel follows).
+std::vector<std::filesystem::path> link_chain(std::filesystem::path path) {
+    std::vector<std::filesystem::path> chain{path};
+    for (int hops = 0; hops < 40; ++hops) {
+        struct stat info {};
+        if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) break;
+        std::error_code error;
+        const std::filesystem::path next = std::filesystem::read_symlink(path, error);
+        if (error) break;
+        path = next.is_absolute() ? next : path.parent_path() / next;
+        chain.push_back(path);
+    }
+    return chain;
+}
+
 // The path a file is written at once its symbolic links are followed (the
 // path itself when it is no link), so that the link stays and the file it
 // names is replaced. A link to something other than a regular file (a
@@ -63,22 +81,16 @@ bool same_file(const struct stat& a, const struct stat& b) {
 // be read, creating the file fails there (/dev/stdout with standard output
 // closed ends at /proc/self/fd/1, which no one can create), where renaming
 // over the first link would have replaced it.
-std::filesystem::path followed(std::filesystem::path path) {
+std::filesystem::path followed(const std::filesystem::path& path) {
     struct stat info {};
     if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return path;
-    std::error_code error;
     if (::stat(path.c_str(), &info) == 0) {
         if (!S_ISREG(info.st_mode)) return path;
+        std::error_code error;
         const std::filesystem::path real = std::filesystem::canonical(path, error);
         return error ? path : real;
     }
-    for (int hops = 0; hops < 40; ++hops) {
-        if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return path;
-        const std::filesystem::path next = std::filesystem::read_symlink(path, error);
-        if (error) return path;
-        path = next.is_absolute() ? next : path.parent_path() / next;
-    }
-    return path;
+    return link_chain(path).back();
 }
 
 // Whether `path` names standard output itself: /dev/stdout, /dev/fd/1 or
@@ -86,18 +98,13 @@ std::filesystem::path followed(std::filesystem::path path) {
 // name is written through descriptor 1; the file standard output happens to
 // be redirected to, named as itself, is replaced as any file is (else what
 // the command prints would land inside it).
-bool names_standard_output(std::filesystem::path path) {
-    for (int hops = 0; hops < 40; ++hops) {
-        const std::filesystem::path name = path.lexically_normal();
+bool names_standard_output(const std::filesystem::path& path) {
+    const std::string own = "/proc/" + std::to_string(::getpid()) + "/fd/1";
+    for (const std::filesystem::path& hop : link_chain(path)) {
+        const std::filesystem::path name = hop.lexically_normal();
         if (name == "/dev/stdout" || name == "/dev/fd/1" || name == "/proc/self/fd/1" ||
-            name == "/proc/" + std::to_string(::getpid()) + "/fd/1")
+            name == own)
             return true;
-        struct stat info {};
-        if (::lstat(path.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return false;
-        std::error_code error;
-        const std::filesystem::path next = std::filesystem::read_symlink(path, error);
-        if (error) return false;
-        path = next.is_absolute() ? next : path.parent_path() / next;
     }
     return false;
 }
