@@ -67,6 +67,36 @@ Integer whole(const std::string& text, const std::string& option) {
     return x.get_num();
 }
 
+// A chance: a fraction in [0, 1] with a denominator the generator can draw.
+Rational chance(const std::string& text, const std::string& option) {
+    const Rational x = number(text, option);
+    if (x < 0 || x > 1 || x.get_den() > (1 << 20))
+        throw UsageError("found '" + text + "' for " + option +
+                         ", expected a fraction from 0 to 1 with a denominator up to 2^20");
+    return x;
+}
+
+Rational above_zero(const std::string& text, const std::string& option) {
+    const Rational x = number(text, option);
+    if (x <= 0)
+        throw UsageError("found '" + text + "' for " + option + ", expected a number above 0");
+    return x;
+}
+
+Integer side(const std::string& text, const std::string& option) {
+    const Integer x = whole(text, option);
+    if (x <= 0)
+        throw UsageError("found '" + text + "' for " + option + ", expected a positive integer");
+    return x;
+}
+
+Integer nonzero(const std::string& text, const std::string& option) {
+    const Integer x = whole(text, option);
+    if (x == 0)
+        throw UsageError("found '" + text + "' for " + option + ", expected a nonzero integer");
+    return x;
+}
+
 Vector point(const std::vector<std::string>& words, std::size_t dim, const std::string& option) {
     if (words.size() != dim)
         throw UsageError("found " + std::to_string(words.size()) + " numbers for " + option +
@@ -82,10 +112,10 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
         RandomFamily f;
         f.dim = a.dim;
         f.mirrors = a.mirrors;
-        f.absorbers = number(a.absorbers, "--absorbers");
-        f.splitters = number(a.splitters, "--splitters");
-        f.one_sided = number(a.one_sided, "--one-sided");
-        f.diagonals = number(a.diagonals, "--diagonals");
+        f.absorbers = chance(a.absorbers, "--absorbers");
+        f.splitters = chance(a.splitters, "--splitters");
+        f.one_sided = chance(a.one_sided, "--one-sided");
+        f.diagonals = chance(a.diagonals, "--diagonals");
         f.rays = a.rays;
         f.targets = a.targets;
         f.range = given("--bits") ? std::int64_t{1} << a.bits : a.range;
@@ -99,7 +129,7 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
     if (a.family == "box") {
         BoxFamily f;
         f.sides.clear();
-        for (const std::string& s : a.sides) f.sides.push_back(whole(s, "--sides"));
+        for (const std::string& s : a.sides) f.sides.push_back(side(s, "--sides"));
         const std::size_t dim = f.sides.size();
         if (dim != 2 && dim != 3)
             throw UsageError("found " + std::to_string(dim) +
@@ -121,11 +151,14 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
         if (pq.size() != 2)
             throw UsageError("found " + std::to_string(pq.size()) +
                              " numbers for --direction, expected 2 (p q)");
-        return generate_square(whole(pq[0], "--direction"), whole(pq[1], "--direction"));
+        return generate_square(nonzero(pq[0], "--direction"), nonzero(pq[1], "--direction"));
     }
     if (a.family == "hallway")
-        return generate_hallway(number(a.length, "--length"), number(a.slope, "--slope"));
+        return generate_hallway(above_zero(a.length, "--length"), above_zero(a.slope, "--slope"));
     if (a.family == "coprime-box") return generate_coprime_box(a.k, targets.at(a.target));
+    if (a.k < 2)
+        throw UsageError("found '" + std::to_string(a.k) +
+                         "' for --k, expected a whole number from 2 to 4096 for coprime-cuboid");
     return generate_coprime_cuboid(a.k, targets.at(a.target));
 }
 
@@ -213,8 +246,9 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
         ->transform(whole_number_u64());
     cmd->add_option("--dim", args->dim, "random: dimension 2 or 3 (default 2)")
         ->check(one_of({"2", "3"}));
-    cmd->add_option("--mirrors", args->mirrors, "random: number of elements (default 20)")
-        ->transform(an_integer());
+    cmd->add_option("--mirrors", args->mirrors,
+                    "random: number of elements, 0 to 10^6 (default 20)")
+        ->transform(whole_number_in(0, 1'000'000));
     cmd->add_option("--absorbers", args->absorbers,
                     "random: the chance an element absorbs, a fraction like 1/10 (default 0)");
     cmd->add_option("--splitters", args->splitters,
@@ -229,28 +263,30 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--rays", args->rays,
                     "random: the number of rays, 1 to 1000 (default 1), each a random start and "
                     "direction")
-        ->transform(an_integer());
+        ->transform(whole_number_in(1, 1000));
     cmd->add_option("--targets", args->targets,
                     "random: the number of targets, 1 to 1000 (default 1), random points; "
                     "--target-after needs 1 ray, 1 target and no splitters")
-        ->transform(an_integer());
+        ->transform(whole_number_in(1, 1000));
     CLI::Option* range =
-        cmd->add_option("--range", args->range, "random: coordinates in [0, R] (default 1000)")
-            ->transform(an_integer());
+        cmd->add_option("--range", args->range,
+                        "random: coordinates in [0, R], R from 2 to 2^62 / Q (default 1000)")
+            ->transform(whole_number_in(2, std::uint64_t{1} << 62));
     cmd->add_option("--bits", args->bits, "random: coordinates in [0, 2^B] (instead of --range)")
         ->excludes(range)
         ->transform(whole_number_in(1, 40));
     cmd->add_option("--denominator", args->denominator,
-                    "random: each number is k/q with q in 1..Q (default 1: integers)")
-        ->transform(an_integer());
+                    "random: each number is k/q with q in 1..Q, Q up to 2^20 (default 1: integers)")
+        ->transform(whole_number_in(1, std::uint64_t{1} << 20));
     cmd->add_flag("--box", args->box, "random: also the closed mirror box [0, R]^dim");
     cmd->add_option("--target-after", args->target_after,
                     "random: the target is the midpoint of the segment after K reflections (the "
-                    "answer is then known: yes); without it, a random point")
-        ->transform(an_integer());
+                    "answer is then known: yes), K up to 10^6; without it, a random point")
+        ->transform(whole_number_in(0, 1'000'000));
     cmd->add_option("--direction-size", args->direction_size,
-                    "random: direction components are nonzero integers in [-D, D] (default 10)")
-        ->transform(an_integer());
+                    "random: direction components are nonzero integers in [-D, D], D up to 2^40 "
+                    "(default 10)")
+        ->transform(whole_number_in(1, std::uint64_t{1} << 40));
     cmd->add_option("--sides", args->sides, "box: 2 or 3 positive integer sides (default 3 5)")
         ->expected(2, 3);
     cmd->add_option("--start", args->start, "box: the start point (default the corner 0)")

@@ -55,25 +55,6 @@ inline CLI::Validator whole_number_u64() {
     return whole_number_in(0, std::numeric_limits<std::uint64_t>::max());
 }
 
-// An integer in decimal digits, perhaps negative, that fits 64 bits; the
-// range is the library's to check (its message names the bound). Without
-// this CLI11 says "Could not convert: --mirrors = x".
-inline CLI::Validator an_integer() {
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            const bool negative = !text.empty() && text[0] == '-';
-            const std::string digits = decimal_digits(text, negative ? 1 : 0);
-            const std::string value = negative && digits != "0" ? "-" + digits : digits;
-            errno = 0;
-            if (!digits.empty()) std::strtoll(value.c_str(), nullptr, 10);
-            if (digits.empty() || errno != 0)
-                return "found '" + text + "', expected a whole number from -2^63 to 2^63 - 1";
-            text = value;
-            return {};
-        },
-        "");
-}
-
 // One of `names`, spelled exactly.
 inline CLI::Validator one_of(std::vector<std::string> names) {
     std::string list;

@@ -108,11 +108,53 @@ TEST_CASE("bounded whole numbers and named choices say what they found and expec
     require_rejected("generate coprime-box --k -3",
                      "--k: found '-3', expected a whole number from 1 to 4096");
     require_rejected("generate maze", "found 'maze', expected one of random, box,");
-    // Integers whose range the library checks: CLI11 said "Could not convert".
-    for (const std::string value : {"x", "1.5", "-", "99999999999999999999"})
+    // The generator's ranges, at the option that sets them (CLI11 said
+    // "Could not convert", and the library "the number of mirrors must be in
+    // [0, 10^6]", naming no option and not what it found).
+    for (const std::string value : {"x", "1.5", "-", "-1", "1000001", "99999999999999999999"})
         require_rejected("generate random --mirrors " + value,
-                         "--mirrors: found '" + value + "', expected a whole number from -2^63");
-    require_rejected("generate random --mirrors -1", "the number of mirrors must be in [0, 10^6]");
+                         "--mirrors: found '" + value +
+                             "', expected a whole number from 0 to 1000000");
+    for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+             {"random --rays 0", "--rays: found '0', expected a whole number from 1 to 1000"},
+             {"random --targets 1001",
+              "--targets: found '1001', expected a whole number from 1 to 1000"},
+             {"random --range 1",
+              "--range: found '1', expected a whole number from 2 to 4611686018427387904"},
+             {"random --denominator 0",
+              "--denominator: found '0', expected a whole number from 1 to 1048576"},
+             {"random --target-after -1",
+              "--target-after: found '-1', expected a whole number from 0 to 1000000"},
+             {"random --direction-size 0",
+              "--direction-size: found '0', expected a whole number from 1 to 1099511627776"},
+             {"random --absorbers 3/2", "found '3/2' for --absorbers, expected a fraction from 0 "
+                                        "to 1 with a denominator up to 2^20"},
+             {"random --splitters -1/2",
+              "found '-1/2' for --splitters, expected a fraction from 0 to 1"},
+             {"random --one-sided 1/2097152", "found '1/2097152' for --one-sided, expected a "
+                                              "fraction from 0 to 1 with a denominator up to 2^20"},
+             {"random --diagonals 2", "found '2' for --diagonals, expected a fraction"},
+             {"box --sides 3 0", "found '0' for --sides, expected a positive integer"},
+             {"square --direction 0 3", "found '0' for --direction, expected a nonzero integer"},
+             {"hallway --length -5", "found '-5' for --length, expected a number above 0"},
+             {"hallway --slope 0", "found '0' for --slope, expected a number above 0"},
+             {"coprime-cuboid --k 1",
+              "found '1' for --k, expected a whole number from 2 to 4096 for coprime-cuboid"},
+             // What no single option decides, the library says in the same form.
+             {"random --range 4611686018427387904 --denominator 2",
+              "random: found 4611686018427387904 for the coordinate range, expected a "
+              "whole number from 2 to 2^62 / the denominator bound = 2305843009213693952"},
+             {"random --rays 2 --target-after 3",
+              "random: found a target on the trajectory with 2 rays, 1 targets and the "
+              "splitter fraction 0, expected one ray, one target and no splitters"},
+             {"random --dim 3 --diagonals 1/2",
+              "random: found diagonal elements in dimension 3, expected dimension 2"},
+             {"random --mirrors 1000000 --target-after 1000",
+              "random: found 1001006006 for (the target's segment + 1) * (mirrors + 6), "
+              "expected at most 10^9"},
+             {"box --sides 3 5 --direction 0 0",
+              "box: found the direction 0, expected a nonzero vector"}})
+        require_rejected("generate " + args, expected);
     // -1 wrapped to 2^64 - 1, and 0x9 read as hex, before.
     for (const std::string value : {"-1", "0x1", "''"})
         require_rejected("realistic --from-scene --target " + value + " " + file,
@@ -176,7 +218,8 @@ TEST_CASE("integer options are decimal, leading zeros and all", "[option_ranges]
         INFO("stderr: " << r.err);
         CHECK(r.status != 2);
     }
-    require_rejected("generate random --mirrors -08", "the number of mirrors must be in [0, 10^6]");
+    require_rejected("generate random --mirrors -08",
+                     "--mirrors: found '-08', expected a whole number from 0 to 1000000");
     require_rejected("batch " + file + " --jobs 0000",
                      "--jobs: found '0000', expected a whole number from 1 to 4096");
 }

@@ -63,16 +63,20 @@ const char* target_name(BoxFamily::Target target) {
 
 GeneratedScene generate_box(const BoxFamily& f) {
     const int dim = static_cast<int>(f.sides.size());
-    if (dim != 2 && dim != 3) throw std::invalid_argument("a box has 2 or 3 sides");
+    if (dim != 2 && dim != 3)
+        throw std::invalid_argument("found " + std::to_string(dim) +
+                                    " sides for a box, expected 2 or 3");
     for (const Integer& a : f.sides)
-        if (a < 1) throw std::invalid_argument("the sides of a box must be positive integers");
+        if (a < 1)
+            throw std::invalid_argument("found the side " + a.get_str() +
+                                        ", expected a positive integer");
     GeneratedScene out;
     Scene& scene = out.scene;
     scene.dim = dim;
     std::vector<Rational> sides(f.sides.begin(), f.sides.end());
     generate::add_box_faces(scene, sides);
     if (f.direction && (*f.direction)[0] == 0 && (*f.direction)[1] == 0 && (*f.direction)[2] == 0)
-        throw std::invalid_argument("the direction must not be 0");
+        throw std::invalid_argument("found the direction 0, expected a nonzero vector");
     const bool from_corner = !f.start && !f.direction;
     for (int j = 0; j < dim; ++j) {
         scene.ray().start[j] = f.start ? (*f.start)[j] : Rational(0);
@@ -121,7 +125,9 @@ GeneratedScene generate_box(const BoxFamily& f) {
 }
 
 GeneratedScene generate_coprime_box(unsigned k, BoxFamily::Target target) {
-    if (k < 1 || k > 4096) throw std::invalid_argument("k must be in [1, 4096]");
+    if (k < 1 || k > 4096)
+        throw std::invalid_argument("found k = " + std::to_string(k) +
+                                    ", expected a whole number from 1 to 4096");
     BoxFamily f;
     const Integer two_k = Integer(1) << k;
     f.sides = {two_k + 1, two_k};
@@ -134,7 +140,9 @@ GeneratedScene generate_coprime_box(unsigned k, BoxFamily::Target target) {
 }
 
 GeneratedScene generate_coprime_cuboid(unsigned k, BoxFamily::Target target) {
-    if (k < 2 || k > 4096) throw std::invalid_argument("k must be in [2, 4096]");
+    if (k < 2 || k > 4096)
+        throw std::invalid_argument("found k = " + std::to_string(k) +
+                                    ", expected a whole number from 2 to 4096");
     BoxFamily f;
     const Integer two_k = Integer(1) << k;
     f.sides = {two_k + 1, two_k, two_k - 1};

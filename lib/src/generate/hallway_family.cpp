@@ -13,8 +13,12 @@ namespace orthoray {
 // goes on in its last direction: folded, y = Y - N when N is even and
 // N + 1 - Y when N is odd, and the target is that point at x = length + 1.
 GeneratedScene generate_hallway(const Rational& length, const Rational& slope) {
-    if (length <= 0) throw std::invalid_argument("the hallway's length must be positive");
-    if (slope <= 0) throw std::invalid_argument("the slope must be positive");
+    if (length <= 0)
+        throw std::invalid_argument("found the length " + length.get_str() +
+                                    ", expected a number above 0");
+    if (slope <= 0)
+        throw std::invalid_argument("found the slope " + slope.get_str() +
+                                    ", expected a number above 0");
     GeneratedScene out;
     Scene& scene = out.scene;
     scene.dim = 2;

@@ -40,42 +40,56 @@ bool on_segment(const Vector& x, const Vector& a, const Vector& b, int dim, bool
     return lambda && *lambda >= 0 && (ray || *lambda <= 1);
 }
 
+// The house form of a bad value: "found ..., expected ...".
+[[noreturn]] void refuse(const std::string& found, const std::string& expected) {
+    throw std::invalid_argument("found " + found + ", expected " + expected);
+}
+
+void check_count(std::int64_t value, const std::string& what, std::int64_t least, std::int64_t most,
+                 const std::string& expected) {
+    if (value < least || value > most) refuse(std::to_string(value) + " for " + what, expected);
+}
+
 void check(const RandomFamily& f) {
-    if (f.dim != 2 && f.dim != 3) throw std::invalid_argument("the dimension must be 2 or 3");
-    if (f.mirrors < 0 || f.mirrors > 1'000'000)
-        throw std::invalid_argument("the number of mirrors must be in [0, 10^6]");
+    check_count(f.dim, "the dimension", 2, 3, "2 or 3");
+    check_count(f.mirrors, "the number of mirrors", 0, 1'000'000, "a whole number from 0 to 10^6");
     auto check_chance = [](const Rational& chance, const std::string& what) {
         if (chance < 0 || chance > 1 || chance.get_den() > (1 << 20))
-            throw std::invalid_argument(
-                "the " + what + " fraction must be in [0, 1], with a denominator up to 2^20");
+            refuse(chance.get_str() + " for the " + what + " fraction",
+                   "a fraction from 0 to 1 with a denominator up to 2^20");
     };
     check_chance(f.absorbers, "absorber");
     check_chance(f.splitters, "splitter");
     check_chance(f.one_sided, "one-sided");
     check_chance(f.diagonals, "diagonal");
     if (f.diagonals > 0 && f.dim != 2)
-        throw std::invalid_argument("diagonal elements are 2D only: they need dimension 2");
-    if (f.rays < 1 || f.rays > 1000) throw std::invalid_argument("the rays must be 1 to 1000");
-    if (f.targets < 1 || f.targets > 1000)
-        throw std::invalid_argument("the targets must be 1 to 1000");
+        refuse("diagonal elements in dimension 3", "dimension 2: diagonals are 2D only");
+    check_count(f.rays, "the number of rays", 1, 1000, "a whole number from 1 to 1000");
+    check_count(f.targets, "the number of targets", 1, 1000, "a whole number from 1 to 1000");
     if (f.target_after && (f.rays > 1 || f.targets > 1 || f.splitters > 0))
-        throw std::invalid_argument("the target's segment places one target on one trajectory: "
-                                    "it needs one ray, one target and no splitters");
-    if (f.denominator < 1 || f.denominator > (std::int64_t{1} << 20))
-        throw std::invalid_argument("the denominator bound must be in [1, 2^20]");
+        refuse("a target on the trajectory with " + std::to_string(f.rays) + " rays, " +
+                   std::to_string(f.targets) + " targets and the splitter fraction " +
+                   f.splitters.get_str(),
+               "one ray, one target and no splitters: it places one target on one path");
+    check_count(f.denominator, "the denominator bound", 1, std::int64_t{1} << 20,
+                "a whole number from 1 to 2^20");
     // Numerators k in [0, range * q] must fit in 64 bits: ranges of 10^18
     // with integer coordinates are fine (the induction engine's benchmark).
-    if (f.range < 2 || f.range > (std::int64_t{1} << 62) / f.denominator)
-        throw std::invalid_argument(
-            "the coordinate range must be in [2, 2^62 / the denominator bound]");
-    if (f.direction_size < 1 || f.direction_size > (std::int64_t{1} << 40))
-        throw std::invalid_argument("the direction size must be in [1, 2^40]");
-    if (f.target_after && (*f.target_after < 0 || *f.target_after > 1'000'000))
-        throw std::invalid_argument("the target's segment must be in [0, 10^6]");
+    const std::int64_t widest = (std::int64_t{1} << 62) / f.denominator;
+    check_count(f.range, "the coordinate range", 2, widest,
+                "a whole number from 2 to 2^62 / the denominator bound = " +
+                    std::to_string(widest));
+    check_count(f.direction_size, "the direction size", 1, std::int64_t{1} << 40,
+                "a whole number from 1 to 2^40");
+    if (f.target_after)
+        check_count(*f.target_after, "the target's segment", 0, 1'000'000,
+                    "a whole number from 0 to 10^6");
     // The reference tracer scans every element at every reflection.
     if (f.target_after && (*f.target_after + 1) * (f.mirrors + 6) > 1'000'000'000)
-        throw std::invalid_argument("tracing K reflections among this many mirrors would take "
-                                    "too long: (K + 1) * mirrors must stay below 10^9");
+        refuse(std::to_string((*f.target_after + 1) * (f.mirrors + 6)) +
+                   " for (the target's segment + 1) * (mirrors + 6)",
+               "at most 10^9: tracing that many reflections among this many mirrors would take "
+               "too long");
 }
 
 // True with probability `chance` (a fraction with a small denominator), by

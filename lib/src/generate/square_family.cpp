@@ -21,7 +21,8 @@ namespace orthoray {
 // of that sum (P divides neither p' nor any other denominator), so never.
 GeneratedScene generate_square(const Integer& p, const Integer& q) {
     if (p == 0 || q == 0)
-        throw std::invalid_argument("both direction components p and q must be nonzero");
+        throw std::invalid_argument("found the direction (" + p.get_str() + ", " + q.get_str() +
+                                    "), expected nonzero components p and q");
     GeneratedScene out;
     Scene& scene = out.scene;
     scene.dim = 2;
