@@ -229,18 +229,18 @@ void draw_branches(const Scene& scene, const RenderArgs& args, SceneRenderer& re
                             " states drawn, fewest reflections first (--steps N draws more)");
 }
 
-// SVG is written to the target through OutputFile; PNG is converted by
-// rsvg-convert through pipes (svg_to_png.hpp) into the same OutputFile, so
-// that the target is only ever replaced whole either way.
-void write_picture(const SceneRenderer& renderer, const RenderArgs& args, OutputFile& out) {
-    const bool png = args.out.ends_with(".png") || args.out.ends_with(".PNG");
-    if (!png) {
-        renderer.write_svg(out.stream());
-        return;
-    }
+// The picture's bytes, whole: SVG, or PNG converted from it by rsvg-convert
+// through pipes (svg_to_png.hpp). Made in memory while a stop may still end
+// the run (a conversion can take seconds), so that what is written after
+// stop_no_more() is only a copy: a target that is written in place (a pipe,
+// /dev/stdout) then gets the whole picture or nothing.
+std::string picture_bytes(const SceneRenderer& renderer, const RenderArgs& args) {
     std::ostringstream svg;
     renderer.write_svg(svg);
-    svg_to_png(svg.str(), out.stream());
+    if (!args.out.ends_with(".png") && !args.out.ends_with(".PNG")) return std::move(svg).str();
+    std::ostringstream png;
+    svg_to_png(svg.str(), png);
+    return std::move(png).str();
 }
 
 // Segments (with their exact points) the interactive viewer keeps: a
@@ -313,14 +313,17 @@ int run(const RenderArgs& args, const CLI::Option* steps, const CLI::Option* tim
         end = draw_first_reflections(scene, args, renderer);
     }
     if (!branches) renderer.finish(end);
-    if (picture) write_picture(renderer, args, *picture);
+    const std::string picture_text = picture ? picture_bytes(renderer, args) : std::string();
     // The interactive viewer's page (docs/render.md, "Interactive viewer").
+    std::ostringstream page_text;
     if (page)
-        renderer.write_html(page->stream(),
+        renderer.write_html(page_text,
                             "orthoray: " + std::filesystem::path(args.file).filename().string());
-    // Everything is written: a stop now would leave one file in place and
-    // not the other.
+    // Everything is made: from here a stop would leave one file written and
+    // not the other, or a picture printed in part.
     stop_no_more();
+    if (picture) picture->stream() << picture_text;
+    if (page) page->stream() << page_text.view();
     if (picture) picture->commit();
     if (page) page->commit();
     if (picture) {

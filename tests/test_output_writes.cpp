@@ -308,21 +308,27 @@ TEST_CASE("two outputs that will be one new file, in two spellings, are refused"
 
 TEST_CASE("a stop while the result is printed lets it finish: all of it or nothing",
           "[output_writes][cli]") {
-    // exchange prints its whole result at the end. Its reader here waits a
-    // second before reading, so the command sits in a write to a full pipe
-    // when SIGTERM comes; it used to end there, exit 3 with 64 KiB printed.
+    // Each command prints its whole result at the end. Its reader here waits
+    // a second before reading, so the command sits in a write to a full pipe
+    // when SIGTERM comes; exchange used to end there, exit 3 with 64 KiB
+    // printed, and render -o /dev/stdout wrote its picture before it held
+    // signals.
     const TempDir dir;
-    const std::string scene =
-        dir.write("r.scene", run_cli("generate random --dim 2 --mirrors 2000 --box --bits 30").out);
-    const std::size_t whole = run_cli("exchange " + quote(scene) + " --json").out.size();
-    REQUIRE(whole > 256 * 1024);
-    const std::string fifo = dir.path("fifo"), count = dir.path("count");
-    const ShellResult r =
-        run_shell("mkfifo " + quote(fifo) + "; $ORTHORAY exchange " + quote(scene) + " --json > " +
-                  quote(fifo) + " & pid=$!; exec 3< " + quote(fifo) +
-                  "; sleep 1; kill -TERM $pid; " + "wc -c <&3 > " + quote(count) + "; wait $pid");
-    const std::size_t printed = std::stoul(slurp(count));
-    INFO("status " << r.status << ", " << printed << " of " << whole << " bytes");
-    // Under a slow build the signal may still come while it computes.
-    CHECK(((r.status == 0 && printed == whole) || (r.status == 3 && printed == 0)));
+    const std::string scene = quote(dir.write(
+        "r.scene", run_cli("generate random --dim 2 --mirrors 2000 --box --bits 30").out));
+    for (const std::string& command :
+         {"exchange " + scene + " --json", "render " + scene + " -o /dev/stdout --steps 40000"}) {
+        CAPTURE(command);
+        const std::size_t whole = run_cli(command).out.size();
+        REQUIRE(whole > 256 * 1024);
+        const std::string fifo = dir.path("fifo"), count = dir.path("count");
+        const ShellResult r = run_shell(
+            "rm -f " + quote(fifo) + "; mkfifo " + quote(fifo) + "; $ORTHORAY " + command + " > " +
+            quote(fifo) + " & pid=$!; exec 3< " + quote(fifo) + "; sleep 1; kill -TERM $pid; " +
+            "wc -c <&3 > " + quote(count) + "; wait $pid");
+        const std::size_t printed = std::stoul(slurp(count));
+        INFO("status " << r.status << ", " << printed << " of " << whole << " bytes");
+        // Under a slow build the signal may still come while it computes.
+        CHECK(((r.status == 0 && printed == whole) || (r.status == 3 && printed == 0)));
+    }
 }
