@@ -139,7 +139,7 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
         f.target = targets.at(a.target);
         if (given("--target-point")) {
             if (given("--target"))
-                throw UsageError("--target and --target-point exclude each other");
+                throw UsageError("found both --target and --target-point, expected one of them");
             f.target = BoxFamily::Target::point;
             f.target_point = point(a.target_point, dim, "--target-point");
         }
@@ -162,6 +162,13 @@ GeneratedScene build(const GenerateArgs& a, const CLI::App& cmd) {
     return generate_coprime_cuboid(a.k, targets.at(a.target));
 }
 
+// What the family takes, for a message: "one of its options: --k, --target, --seed".
+std::string options_of(const std::string& family) {
+    std::string list = "one of its options: ";
+    for (const std::string& option : family_options.at(family)) list += option + ", ";
+    return list + "--seed";
+}
+
 // The command line that makes this scene again, for the file's header;
 // refuses an option the family does not take.
 std::string checked_header(const GenerateArgs& args, const CLI::App& cmd) {
@@ -172,8 +179,8 @@ std::string checked_header(const GenerateArgs& args, const CLI::App& cmd) {
         if (option->count() == 0 || name == "FAMILY" || name == "--output" || name == "--help")
             continue;
         if (name != "--seed" && !allowed.contains(name))
-            throw UsageError("the option " + name + " does not apply to the family " + args.family +
-                             " (see 'orthoray generate --help')");
+            throw UsageError("found " + name + " for the family " + args.family + ", expected " +
+                             options_of(args.family) + " (see 'orthoray generate --help')");
         header += ' ' + name;
         // A flag (--box) takes no value on the command line, though CLI11
         // records one ("true"): written, it would not parse again.

@@ -47,9 +47,9 @@ Command add_pieces(CLI::App& app) {
                              "diagonal elements they are the first-return map on the "
                              "eight-sheeted cover: docs/induction.md, section 6)");
         if (!available)
-            throw UsageError("piece tables exist only for 2D scenes whose ray moves in both x and "
-                             "y; '" +
-                             *file + "' is not one");
+            throw UsageError("found '" + *file +
+                             "', expected a 2D scene whose ray moves in both x and y (piece "
+                             "tables exist only for those)");
         stop_no_more(); // decided: a stop now would cut the printing short
         std::cout << out.str();
         return static_cast<int>(yes);

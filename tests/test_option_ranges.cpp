@@ -152,6 +152,11 @@ TEST_CASE("bounded whole numbers and named choices say what they found and expec
              {"random --mirrors 1000000 --target-after 1000",
               "random: found 1001006006 for (the target's segment + 1) * (mirrors + 6), "
               "expected at most 10^9"},
+             {"box --mirrors 3", "found --mirrors for the family box, expected one of its "
+                                 "options: --direction, --sides, --start, --target, "
+                                 "--target-point, --seed"},
+             {"box --target far --target-point 1 1",
+              "found both --target and --target-point, expected one of them"},
              {"box --sides 3 5 --direction 0 0",
               "box: found the direction 0, expected a nonzero vector"}})
         require_rejected("generate " + args, expected);
@@ -162,6 +167,8 @@ TEST_CASE("bounded whole numbers and named choices say what they found and expec
     require_rejected("realistic --from-scene --max-states 0x9 " + file,
                      "--max-states: found '0x9', expected a whole number from 1 to 4294967294");
     CHECK(run_cli("generate random --mirrors 3 --range 4611686018427387904").status == 0);
+    require_rejected("pieces " + quote(instance("3d/box-corner-1x2x3.scene")),
+                     "', expected a 2D scene whose ray moves in both x and y");
 }
 
 TEST_CASE("integer options are decimal, leading zeros and all", "[option_ranges][cli]") {
