@@ -8,6 +8,7 @@
 #include "support/random_octagonal.hpp"
 
 #include "orthoray/exchange.hpp"
+#include "orthoray/parse.hpp"
 #include "orthoray/pieces.hpp"
 #include "orthoray/solve.hpp"
 
@@ -240,6 +241,32 @@ TEST_CASE("the octagonal exchange is a bijection of its states", "[octagonal][in
         ++checked;
     }
     CHECK(checked > cases / 4);
+}
+
+TEST_CASE("a stretch of mirror under an absorber carries no states of the octagonal exchange",
+          "[octagonal][induction]") {
+    // A ray that meets a mirror and an absorber at one point is absorbed, so
+    // no state leaves from there: the wall x = 20 under the absorber is the
+    // same as a wall cut around it. Counting that stretch's mirror alone (a
+    // mutant of the builder's line cutting did) adds states and pieces that
+    // nothing maps onto, and changes no answer: only the exchange shows it.
+    const std::string box = "dim 2\nmirror x 0 y 0 20\nmirror y 0 x 0 20\nmirror y 20 x 0 20\n"
+                            "mirror / 7 7 11 11\nabsorber x 20 y 12 14\nray 6 5 -1 -3\n"
+                            "target 19 1/3\n";
+    const Scene covered = read_scene(box + "mirror x 20 y 0 20\n");
+    const Scene cut = read_scene(box + "mirror x 20 y 0 12\nmirror x 20 y 14 20\n");
+    const auto a = exchange_of(covered), b = exchange_of(cut);
+    REQUIRE(a);
+    REQUIRE(b);
+    CHECK(a->size == b->size);
+    CHECK(a->pieces.size() == b->pieces.size());
+    std::ostringstream text_a, text_b;
+    write_exchange(*a, text_a, ExchangeFormat::json);
+    write_exchange(*b, text_b, ExchangeFormat::json);
+    CHECK(text_a.str() == text_b.str());
+    const Answer answer = induce_scene(covered);
+    CHECK(answer.reason == Reason::cycle);
+    CHECK(answer.reflections == 8);
 }
 
 TEST_CASE("octagonal induction answers a scene scaled by 10^17 or 10^40 as the scene itself",
