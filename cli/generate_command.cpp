@@ -70,7 +70,7 @@ Integer whole(const std::string& text, const std::string& option) {
 // A chance: a fraction in [0, 1] with a denominator the generator can draw.
 Rational chance(const std::string& text, const std::string& option) {
     const Rational x = number(text, option);
-    if (x < 0 || x > 1 || x.get_den() > (1 << 20))
+    if (x < 0 || x > 1 || x.get_den() > RandomFamily::max_denominator)
         throw UsageError("found '" + text + "' for " + option +
                          ", expected a fraction from 0 to 1 with a denominator up to 2^20");
     return x;
@@ -255,7 +255,7 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
         ->check(one_of({"2", "3"}));
     cmd->add_option("--mirrors", args->mirrors,
                     "random: number of elements, 0 to 10^6 (default 20)")
-        ->transform(whole_number_in(0, 1'000'000));
+        ->transform(whole_number_in(0, RandomFamily::max_mirrors));
     cmd->add_option("--absorbers", args->absorbers,
                     "random: the chance an element absorbs, a fraction like 1/10 (default 0)");
     cmd->add_option("--splitters", args->splitters,
@@ -270,30 +270,30 @@ CLI::App* register_generate(CLI::App& app, const std::shared_ptr<GenerateArgs>& 
     cmd->add_option("--rays", args->rays,
                     "random: the number of rays, 1 to 1000 (default 1), each a random start and "
                     "direction")
-        ->transform(whole_number_in(1, 1000));
+        ->transform(whole_number_in(1, RandomFamily::max_rays));
     cmd->add_option("--targets", args->targets,
                     "random: the number of targets, 1 to 1000 (default 1), random points; "
                     "--target-after needs 1 ray, 1 target and no splitters")
-        ->transform(whole_number_in(1, 1000));
+        ->transform(whole_number_in(1, RandomFamily::max_targets));
     CLI::Option* range =
         cmd->add_option("--range", args->range,
                         "random: coordinates in [0, R], R from 2 to 2^62 / Q (default 1000)")
-            ->transform(whole_number_in(2, std::uint64_t{1} << 62));
+            ->transform(whole_number_in(2, RandomFamily::max_range));
     cmd->add_option("--bits", args->bits, "random: coordinates in [0, 2^B] (instead of --range)")
         ->excludes(range)
         ->transform(whole_number_in(1, 40));
     cmd->add_option("--denominator", args->denominator,
                     "random: each number is k/q with q in 1..Q, Q up to 2^20 (default 1: integers)")
-        ->transform(whole_number_in(1, std::uint64_t{1} << 20));
+        ->transform(whole_number_in(1, RandomFamily::max_denominator));
     cmd->add_flag("--box", args->box, "random: also the closed mirror box [0, R]^dim");
     cmd->add_option("--target-after", args->target_after,
                     "random: the target is the midpoint of the segment after K reflections (the "
                     "answer is then known: yes), K up to 10^6; without it, a random point")
-        ->transform(whole_number_in(0, 1'000'000));
+        ->transform(whole_number_in(0, RandomFamily::max_target_after));
     cmd->add_option("--direction-size", args->direction_size,
                     "random: direction components are nonzero integers in [-D, D], D up to 2^40 "
                     "(default 10)")
-        ->transform(whole_number_in(1, std::uint64_t{1} << 40));
+        ->transform(whole_number_in(1, RandomFamily::max_direction_size));
     cmd->add_option("--sides", args->sides, "box: 2 or 3 positive integer sides (default 3 5)")
         ->expected(2, 3);
     cmd->add_option("--start", args->start, "box: the start point (default the corner 0)")

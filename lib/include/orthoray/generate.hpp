@@ -42,6 +42,18 @@ struct GeneratedScene {
 // (docs/generate.md). Left at their defaults, those draw nothing, so a seed
 // gives the same scene it gave before they existed.
 struct RandomFamily {
+    // The bounds generate_random checks, and the command line's options
+    // carry: the number of elements, of rays and of targets, the
+    // denominator bound q (and of a chance), the direction size and the
+    // target's segment. The coordinate range is at most 2^62 / q, so that
+    // every numerator fits 64 bits.
+    static constexpr std::int64_t max_mirrors = 1'000'000;
+    static constexpr std::int64_t max_rays = 1000, max_targets = 1000;
+    static constexpr std::int64_t max_denominator = std::int64_t{1} << 20;
+    static constexpr std::int64_t max_range = std::int64_t{1} << 62;
+    static constexpr std::int64_t max_direction_size = std::int64_t{1} << 40;
+    static constexpr std::int64_t max_target_after = 1'000'000;
+
     int dim = 2;
     std::int64_t mirrors = 20;
     Rational absorbers = 0;       // the chance that an element absorbs, in [0, 1]

@@ -52,9 +52,10 @@ void check_count(std::int64_t value, const std::string& what, std::int64_t least
 
 void check(const RandomFamily& f) {
     check_count(f.dim, "the dimension", 2, 3, "2 or 3");
-    check_count(f.mirrors, "the number of mirrors", 0, 1'000'000, "a whole number from 0 to 10^6");
+    check_count(f.mirrors, "the number of mirrors", 0, RandomFamily::max_mirrors,
+                "a whole number from 0 to 10^6");
     auto check_chance = [](const Rational& chance, const std::string& what) {
-        if (chance < 0 || chance > 1 || chance.get_den() > (1 << 20))
+        if (chance < 0 || chance > 1 || chance.get_den() > RandomFamily::max_denominator)
             refuse(chance.get_str() + " for the " + what + " fraction",
                    "a fraction from 0 to 1 with a denominator up to 2^20");
     };
@@ -64,25 +65,27 @@ void check(const RandomFamily& f) {
     check_chance(f.diagonals, "diagonal");
     if (f.diagonals > 0 && f.dim != 2)
         refuse("diagonal elements in dimension 3", "dimension 2: diagonals are 2D only");
-    check_count(f.rays, "the number of rays", 1, 1000, "a whole number from 1 to 1000");
-    check_count(f.targets, "the number of targets", 1, 1000, "a whole number from 1 to 1000");
+    check_count(f.rays, "the number of rays", 1, RandomFamily::max_rays,
+                "a whole number from 1 to 1000");
+    check_count(f.targets, "the number of targets", 1, RandomFamily::max_targets,
+                "a whole number from 1 to 1000");
     if (f.target_after && (f.rays > 1 || f.targets > 1 || f.splitters > 0))
         refuse("a target on the trajectory with " + std::to_string(f.rays) + " rays, " +
                    std::to_string(f.targets) + " targets and the splitter fraction " +
                    f.splitters.get_str(),
                "one ray, one target and no splitters: it places one target on one path");
-    check_count(f.denominator, "the denominator bound", 1, std::int64_t{1} << 20,
+    check_count(f.denominator, "the denominator bound", 1, RandomFamily::max_denominator,
                 "a whole number from 1 to 2^20");
     // Numerators k in [0, range * q] must fit in 64 bits: ranges of 10^18
     // with integer coordinates are fine (the induction engine's benchmark).
-    const std::int64_t widest = (std::int64_t{1} << 62) / f.denominator;
+    const std::int64_t widest = RandomFamily::max_range / f.denominator;
     check_count(f.range, "the coordinate range", 2, widest,
                 "a whole number from 2 to 2^62 / the denominator bound = " +
                     std::to_string(widest));
-    check_count(f.direction_size, "the direction size", 1, std::int64_t{1} << 40,
+    check_count(f.direction_size, "the direction size", 1, RandomFamily::max_direction_size,
                 "a whole number from 1 to 2^40");
     if (f.target_after)
-        check_count(*f.target_after, "the target's segment", 0, 1'000'000,
+        check_count(*f.target_after, "the target's segment", 0, RandomFamily::max_target_after,
                     "a whole number from 0 to 10^6");
     // The reference tracer scans every element at every reflection.
     if (f.target_after && (*f.target_after + 1) * (f.mirrors + 6) > 1'000'000'000)
