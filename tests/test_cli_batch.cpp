@@ -4,6 +4,7 @@
 #include "support/lazor_levels.hpp"
 #include "support/portable_random.hpp"
 #include "support/run_cli.hpp"
+#include "support/skip_test.hpp"
 #include "support/spawn_cli.hpp"
 #include "support/test_files.hpp"
 
@@ -386,7 +387,7 @@ TEST_CASE("batch decides Lazor levels as puzzle solve --json does, bad ones as e
           "[batch][cli][puzzle]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     const TempDir dir;

@@ -9,6 +9,7 @@
 #include "support/grid_walk.hpp"
 #include "support/portable_random.hpp"
 #include "support/run_cli.hpp"
+#include "support/skip_test.hpp"
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -165,7 +166,7 @@ TEST_CASE("a maze's scene answers as the puzzle's walk on random mazes", "[grid]
 TEST_CASE("samples: mirror hits before the beam leaves (Samsung mirror game)", "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     for (const std::string name : {"samsung-mirror-game-1", "samsung-mirror-game-2",
@@ -181,7 +182,7 @@ TEST_CASE("samples: the most reflections over every entry (USACO Mirror Field)",
           "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     const std::string name = "usaco2014feb-bronze-mirror-field";
@@ -208,7 +209,7 @@ TEST_CASE("samples: cells entered before the beam leaves, from the path (paiza)"
           "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     const std::string name = "paiza-beam-reflection-1";
@@ -238,7 +239,7 @@ TEST_CASE("samples: fewest mirror flips, each flipped grid decided by orthoray (
           "[grid][samples][slow]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     const auto flip = [](GridCell cell) {
@@ -262,7 +263,7 @@ TEST_CASE("samples: fewest mirrors added, each grid decided by orthoray (TopCode
           "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     const auto add = [](GridCell) {
@@ -285,7 +286,7 @@ TEST_CASE("samples: puzzle splitters are refused where they stand (Advent of Cod
           "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     // The published grid under a header of our own: the first '|' is
@@ -306,7 +307,7 @@ TEST_CASE("samples that are scenes: the first corner receptor of a square room (
           "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     for (const std::string name :
@@ -344,7 +345,7 @@ TEST_CASE("samples that are scenes: the first mirror whose toggle lets the gaze 
           "[grid][samples]") {
     const auto folder = samples_folder();
     if (!folder) {
-        WARN("../shared/puzzles/grid is absent beside the source tree: samples skipped");
+        skip_test("no ../shared/puzzles/grid beside the source tree");
         return;
     }
     const std::string name = "usaco2013jan-bronze-mirrors";

@@ -3,6 +3,7 @@
 // complete (temporary file, then rename), and an output that would
 // overwrite an input or has no name is refused (exit 2).
 #include "support/run_cli.hpp"
+#include "support/skip_test.hpp"
 #include "support/spawn_cli.hpp"
 #include "support/test_files.hpp"
 
@@ -226,7 +227,7 @@ TEST_CASE("a full file system: the write error is reported and the old file kept
     const std::string mount = dir.path("small");
     fs::create_directory(mount);
     if (run_shell("mount -t tmpfs -o size=64k tmpfs \"" + mount + "\"").status != 0) {
-        WARN("cannot mount a small tmpfs here; skipped");
+        skip_test("cannot mount a small tmpfs here");
         return;
     }
     const std::string scene = long_scene(dir);

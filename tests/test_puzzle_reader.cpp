@@ -4,6 +4,7 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/puzzle.hpp"
 #include "support/lazor_levels.hpp"
+#include "support/skip_test.hpp"
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -50,7 +51,7 @@ std::string message_of(const std::string& text) {
 TEST_CASE("every public level reads and survives the writer", "[puzzle][reader]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: public levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     std::vector<std::filesystem::path> files = bff_files(*folder);
@@ -97,7 +98,7 @@ TEST_CASE("the dialects of the public files and the issue read alike", "[puzzle]
 TEST_CASE("each malformed public file gets its one message", "[puzzle][reader]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: malformed files skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     const std::vector<std::pair<std::string, std::string>> expected{

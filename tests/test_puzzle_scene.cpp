@@ -8,6 +8,7 @@
 #include "puzzle/beam_walk.hpp"
 #include "support/lazor_levels.hpp"
 #include "support/portable_random.hpp"
+#include "support/skip_test.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -141,7 +142,7 @@ TEST_CASE("walk, engine and plain rules agree on random placements of the public
           "[puzzle][scene]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: public levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     std::mt19937_64 rng(13);

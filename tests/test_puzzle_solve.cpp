@@ -7,6 +7,7 @@
 #include "orthoray/solve.hpp"
 #include "support/lazor_levels.hpp"
 #include "support/run_cli.hpp"
+#include "support/skip_test.hpp"
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -52,7 +53,7 @@ long brute_force_count(const LazorLevel& level) {
 TEST_CASE("every public level is solved, and each solution checks twice", "[puzzle][solve]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: public levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     int solved = 0;
@@ -73,7 +74,7 @@ TEST_CASE("every public level is solved, and each solution checks twice", "[puzz
 TEST_CASE("the unsolvable public levels are proven unsolvable", "[puzzle][solve]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: unsolvable levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     const auto files = bff_files(*folder / "unsolvable");
@@ -96,7 +97,7 @@ TEST_CASE("the unsolvable public levels are proven unsolvable", "[puzzle][solve]
 TEST_CASE("solution counts (--all) agree with brute force on small levels", "[puzzle][solve]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: small levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     // Levels with few placements, among them every kind of block, several
@@ -122,7 +123,7 @@ TEST_CASE("solution counts (--all) agree with brute force on small levels", "[pu
 TEST_CASE("the answer is the same for any number of threads", "[puzzle][solve]") {
     const auto folder = lazor_folder();
     if (!folder) {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: public levels skipped");
+        skip_test("no ../shared/puzzles/lazor beside the source tree");
         return;
     }
     const auto files = bff_files(*folder);

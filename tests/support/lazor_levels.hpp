@@ -15,7 +15,7 @@
 namespace orthoray::test {
 
 // The folder of the public levels, or nothing when it is not there (the
-// tests that need it then WARN and return).
+// tests that need it then call skip_test() and return).
 std::optional<std::filesystem::path> lazor_folder();
 
 // The .bff files directly in `folder`, sorted.
