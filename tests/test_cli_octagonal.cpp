@@ -3,9 +3,12 @@
 // refusal of the others, and render.
 #include "support/run_cli.hpp"
 #include "support/test_files.hpp"
+#include "support/xml_check.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+
+#include <sstream>
 
 using namespace orthoray::test;
 
@@ -54,6 +57,24 @@ TEST_CASE("a diagonal scene's certificate verifies, and render draws it", "[cli]
     INFO(drawn.out << drawn.err);
     CHECK(drawn.status == 0);
     CHECK(drawn.out.find("wrote ") == 0);
+    // The picture: the four mirrors in one path, two of them slanted, and
+    // the ray's path from its start.
+    const XmlDocument picture = read_xml(slurp(svg));
+    INFO(picture.error);
+    REQUIRE(picture.well_formed);
+    const auto mirrors = with_class(picture, "path", "mirror");
+    REQUIRE(mirrors.size() == 1);
+    std::istringstream moves(mirrors[0]->attributes.at("d"));
+    int drawn_mirrors = 0, slanted = 0;
+    for (char m, l; moves >> m;) {
+        double x0, y0, x1, y1;
+        REQUIRE((m == 'M' && moves >> x0 >> y0 >> l >> x1 >> y1 && l == 'L'));
+        ++drawn_mirrors;
+        slanted += x0 != x1 && y0 != y1;
+    }
+    CHECK(drawn_mirrors == 4);
+    CHECK(slanted == 2);
+    CHECK(!with_class(picture, "path", "trajectory").empty());
 }
 
 TEST_CASE("the walk through the command line: pieces shows the collisions, induction certifies",

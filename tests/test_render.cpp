@@ -25,6 +25,7 @@ using orthoray::RenderOptions;
 using orthoray::Scene;
 using orthoray::SceneRenderer;
 using orthoray::test::read_xml;
+using orthoray::test::with_class;
 using orthoray::test::XmlDocument;
 using orthoray::test::XmlElement;
 
@@ -69,16 +70,6 @@ Picture draw(const Scene& scene, std::uint64_t max_steps = 1000, RenderOptions o
     p.svg = out.str();
     p.xml = read_xml(p.svg);
     return p;
-}
-
-std::vector<const XmlElement*> with_class(const XmlDocument& doc, const std::string& name,
-                                          const std::string& cls) {
-    std::vector<const XmlElement*> found;
-    for (const XmlElement& e : doc.elements) {
-        const auto it = e.attributes.find("class");
-        if (e.name == name && it != e.attributes.end() && it->second == cls) found.push_back(&e);
-    }
-    return found;
 }
 
 std::size_t count_char(const std::string& text, char c) {

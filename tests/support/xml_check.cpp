@@ -84,4 +84,14 @@ XmlDocument read_xml(const std::string& text) {
     return doc;
 }
 
+std::vector<const XmlElement*> with_class(const XmlDocument& doc, const std::string& name,
+                                          const std::string& cls) {
+    std::vector<const XmlElement*> found;
+    for (const XmlElement& e : doc.elements) {
+        const auto it = e.attributes.find("class");
+        if (e.name == name && it != e.attributes.end() && it->second == cls) found.push_back(&e);
+    }
+    return found;
+}
+
 } // namespace orthoray::test

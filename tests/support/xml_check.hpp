@@ -25,4 +25,8 @@ struct XmlDocument {
 
 XmlDocument read_xml(const std::string& text);
 
+// The elements `name` of class `cls` (the whole attribute), in document order.
+std::vector<const XmlElement*> with_class(const XmlDocument& doc, const std::string& name,
+                                          const std::string& cls);
+
 } // namespace orthoray::test
