@@ -292,6 +292,27 @@ TEST_CASE("a wrong cycle period or state is rejected", "[certificate]") {
     CHECK(cycles >= 3);
 }
 
+TEST_CASE("a verdict the listed path contradicts is rejected", "[certificate]") {
+    // Points true to the scene, with a verdict they refute. An escape whose
+    // final ray passes the target: the answer is yes, with 0 reflections.
+    const Scene open = orthoray::read_scene("dim 2\nray 0 0 1 0\ntarget 5 0\n", "<scene>");
+    expect_invalid(open,
+                   "orthoray-certificate 1\ndim 2\npoint 0 0\nanswer no\nreason escape\n"
+                   "reflections 0\ndirection 1 0\nend\n",
+                   "the target lies on the final ray from point 0");
+    // A hit claimed for a target behind the absorber that stops the ray at
+    // (3, 0), with its count one past the absorption point.
+    const Scene stopped =
+        orthoray::read_scene("dim 2\nabsorber x 3 y -1 1\nray 0 0 1 0\ntarget 5 0\n", "<scene>");
+    const std::string absorbed = "orthoray-certificate 1\ndim 2\npoint 0 0\npoint 3 0\n"
+                                 "answer no\nreason absorbed\nreflections 0\nend\n";
+    expect_valid(stopped, absorbed, "valid: absorbed, 0 reflections");
+    expect_invalid(stopped,
+                   "orthoray-certificate 1\ndim 2\npoint 0 0\npoint 3 0\nanswer yes\n"
+                   "reason hit\nreflections 1\ntarget 5 0\nend\n",
+                   "the ray is absorbed at point 1, yet the reason is hit");
+}
+
 TEST_CASE("a certificate of a different scene is rejected", "[certificate]") {
     const auto& all = curated_scenes();
     std::vector<std::string> texts;

@@ -412,6 +412,15 @@ TEST_CASE("tampered induction certificates are rejected for their reason",
         expect_invalid(box(), replace(box_certificate, "reflections 4", "reflections 3"),
                        "reflections 3, but the induction gives 4");
     }
+    SECTION("a scene with a one-sided element") {
+        // One-sided elements give no exchange to induce on
+        // (docs/induction-certificates.md): the same hallway with a one-way
+        // wall is refused before any of its checks.
+        Scene one_way = h;
+        one_way.elements[1].side = orthoray::Side::minus;
+        expect_invalid(one_way, c,
+                       "induction certificates are for scenes without one-sided elements");
+    }
     SECTION("partial") {
         // A run stopped by a limit while writing the steps.
         std::string cut = c.substr(0, c.find("step equal 0 2"));

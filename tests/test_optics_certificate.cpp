@@ -169,6 +169,13 @@ TEST_CASE("a one-way mirror's rho cycle: tail, period and sides", "[certificate]
     doubled = replaced(doubled, "reflections 3", "reflections 5");
     doubled = replaced(doubled, "answer", "point 5 3\npoint 10 3\nanswer");
     expect_invalid(scene, doubled, "period 4, but the state at point 2 returns at point 4");
+    // Period 1 from s3, a state first met at point 3, not at tail + 1 = 2:
+    // the states between must be checked against it too.
+    std::string late = replaced(rho_cert, "period 2", "period 1");
+    late = replaced(late, "state 10 3 -1 0", "state 5 3 1 0");
+    late = replaced(late, "reflections 3", "reflections 2");
+    late = replaced(late, "point 5 3\npoint 10 3\n", "point 5 3\n");
+    expect_invalid(scene, late, "state (5, 3) (1, 0) is not the state at point 2 (tail + 1)");
     // A one-sided scene's cycle must state its tail.
     expect_invalid(scene, replaced(rho_cert, "tail 1\n", ""), "needs its 'tail' line");
     // A wrong side: the path from (10,3) along -x runs through the front of
@@ -243,6 +250,16 @@ TEST_CASE("a splitter lights two targets: the certificate and its tamperings",
     expect_invalid(scene, replaced(split_cert, "step 2 0 -1 0", "step 2 0 0 1"),
                    "lit target 2 (line 10): step 1 leaves (2, 0) along (0, 1), which the "
                    "elements there do not allow");
+    // A witness that leaves the ray's start in another direction, toward a
+    // target (0, 5) no branch reaches: it must start as the ray does.
+    const Scene aside = scene_of("dim 2\nray 0 0 1 0\ntarget 5 0\ntarget 0 5\n");
+    expect_invalid(aside,
+                   "orthoray-certificate 1\ndim 2\nillumination\n"
+                   "branch 0 0 1 0 ray 1 reflections 0\n"
+                   "lit 1 reflections 0 ray 1\nstep 0 0 1 0\n"
+                   "lit 2 reflections 0 ray 1\nstep 0 0 0 1\n"
+                   "answer yes\nreason lit\nreflections 0\nstates 1\nend\n",
+                   "step 0 is (0, 0) (0, 1), not ray 1's start (0, 0) (1, 0)");
     // A witness whose changes of direction are not its K.
     expect_invalid(scene, replaced(split_cert, "lit 2 reflections 1", "lit 2 reflections 0"),
                    "the witness changes direction 1 times, not 0");
