@@ -139,6 +139,31 @@ TEST_CASE("the answer is the same for any number of threads", "[puzzle][solve]")
     }
 }
 
+TEST_CASE("a level with more blocks than open cells is unsolvable", "[puzzle][solve]") {
+    // Built in code: the .bff reader refuses such a level. Every block must
+    // be placed, and two blocks do not fit one open cell, even though the
+    // laser never enters that cell and the point is lit without them.
+    LazorLevel level;
+    level.width = 2;
+    level.height = 1;
+    level.cells = {LazorCell::open, LazorCell::blocked};
+    level.blocks = {2, 0, 0};
+    LazorLaser laser;
+    laser.x = 3;
+    laser.y = 0;
+    laser.dx = 1;
+    laser.dy = 1;
+    level.lasers = {laser};
+    LazorPoint point;
+    point.x = 4;
+    point.y = 1;
+    level.points = {point};
+    CHECK(solve_lazor(level).status == LazorSolution::Status::unsolvable);
+    // With one block it fits, and the point is lit wherever it goes.
+    level.blocks = {1, 0, 0};
+    CHECK(solve_lazor(level).status == LazorSolution::Status::solved);
+}
+
 TEST_CASE("limits stop the search with nothing claimed", "[puzzle][solve]") {
     const LazorLevel level =
         read_lazor_level("GRID START\no o o o\no o o o\no o o o\no o o o\nGRID STOP\nA 2\nC 1\n"
