@@ -4,7 +4,6 @@
 #include "support/lazor_levels.hpp"
 #include "support/portable_random.hpp"
 #include "support/run_cli.hpp"
-#include "support/skip_test.hpp"
 #include "support/spawn_cli.hpp"
 #include "support/test_files.hpp"
 
@@ -385,11 +384,8 @@ TEST_CASE("batch stops with exit 5 at a certificate it cannot write, and --resum
 
 TEST_CASE("batch decides Lazor levels as puzzle solve --json does, bad ones as errors",
           "[batch][cli][puzzle]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     const TempDir dir;
     fs::create_directories(dir.path("levels/public"));
     fs::create_directory(dir.path("certs"));

@@ -44,9 +44,12 @@ GridMaze instance_maze(const std::string& name) {
     return read_grid_maze(read_file(path), path);
 }
 
-std::optional<fs::path> samples_folder() {
+// The folder of the public grid samples; when it is not there, the test
+// that asked is reported skipped (support/skip_test.hpp) and must return.
+std::optional<fs::path> samples_folder_or_skip() {
     const fs::path folder = fs::path(source_path("..")) / "shared" / "puzzles" / "grid";
     if (fs::is_regular_file(folder / "expected.jsonl")) return folder;
+    skip_test("no ../shared/puzzles/grid beside the source tree");
     return std::nullopt;
 }
 
@@ -164,11 +167,8 @@ TEST_CASE("a maze's scene answers as the puzzle's walk on random mazes", "[grid]
 }
 
 TEST_CASE("samples: mirror hits before the beam leaves (Samsung mirror game)", "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     for (const std::string name : {"samsung-mirror-game-1", "samsung-mirror-game-2",
                                    "samsung-mirror-game-3", "samsung-mirror-game-4"}) {
         CAPTURE(name);
@@ -180,11 +180,8 @@ TEST_CASE("samples: mirror hits before the beam leaves (Samsung mirror game)", "
 
 TEST_CASE("samples: the most reflections over every entry (USACO Mirror Field)",
           "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     const std::string name = "usaco2014feb-bronze-mirror-field";
     GridMaze maze = instance_maze(name);
     long most = -1;
@@ -207,11 +204,8 @@ TEST_CASE("samples: the most reflections over every entry (USACO Mirror Field)",
 
 TEST_CASE("samples: cells entered before the beam leaves, from the path (paiza)",
           "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     const std::string name = "paiza-beam-reflection-1";
     const GridMaze maze = instance_maze(name);
     PathRecorder path;
@@ -237,11 +231,8 @@ TEST_CASE("samples: cells entered before the beam leaves, from the path (paiza)"
 
 TEST_CASE("samples: fewest mirror flips, each flipped grid decided by orthoray (DMOPC)",
           "[grid][samples][slow]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     const auto flip = [](GridCell cell) {
         return std::vector<GridCell>{cell == GridCell::rising ? GridCell::falling
                                                               : GridCell::rising};
@@ -261,11 +252,8 @@ TEST_CASE("samples: fewest mirror flips, each flipped grid decided by orthoray (
 
 TEST_CASE("samples: fewest mirrors added, each grid decided by orthoray (TopCoder)",
           "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     const auto add = [](GridCell) {
         return std::vector<GridCell>{GridCell::rising, GridCell::falling};
     };
@@ -284,11 +272,8 @@ TEST_CASE("samples: fewest mirrors added, each grid decided by orthoray (TopCode
 
 TEST_CASE("samples: puzzle splitters are refused where they stand (Advent of Code)",
           "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     // The published grid under a header of our own: the first '|' is
     // refused, at its row (line 3) and column.
     const std::string text = "beam left 0\ngrid\n" + slurp((*folder / "aoc2023-d16-part1.txt"));
@@ -305,11 +290,8 @@ TEST_CASE("samples: puzzle splitters are refused where they stand (Advent of Cod
 
 TEST_CASE("samples that are scenes: the first corner receptor of a square room (LeetCode 858)",
           "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     for (const std::string name :
          {"leetcode858-mirror-reflection-1", "leetcode858-mirror-reflection-2"}) {
         CAPTURE(name);
@@ -343,11 +325,8 @@ TEST_CASE("samples that are scenes: the first corner receptor of a square room (
 TEST_CASE("samples that are scenes: the first mirror whose toggle lets the gaze through (USACO "
           "Mirrors)",
           "[grid][samples]") {
-    const auto folder = samples_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/grid beside the source tree");
-        return;
-    }
+    const auto folder = samples_folder_or_skip();
+    if (!folder) return;
     const std::string name = "usaco2013jan-bronze-mirrors";
     std::istringstream in(slurp((*folder / (name + ".txt")).string()));
     int n = 0, a = 0, b = 0;

@@ -4,7 +4,6 @@
 #include "orthoray/parse.hpp"
 #include "orthoray/puzzle.hpp"
 #include "support/lazor_levels.hpp"
-#include "support/skip_test.hpp"
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -49,11 +48,8 @@ std::string message_of(const std::string& text) {
 } // namespace
 
 TEST_CASE("every public level reads and survives the writer", "[puzzle][reader]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     std::vector<std::filesystem::path> files = bff_files(*folder);
     for (const auto& f : bff_files(*folder / "unsolvable")) files.push_back(f);
     CHECK(files.size() == 168);
@@ -96,11 +92,8 @@ TEST_CASE("the dialects of the public files and the issue read alike", "[puzzle]
 }
 
 TEST_CASE("each malformed public file gets its one message", "[puzzle][reader]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     const std::vector<std::pair<std::string, std::string>> expected{
         {"grid_1.bff", "4:9: found a 5th cell, expected 4 cells like the first row (line 2)"},
         {"grid_2.bff", "7:3: found '6' in the grid, expected a cell: o (open), x (no block), "

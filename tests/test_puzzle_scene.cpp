@@ -8,7 +8,6 @@
 #include "puzzle/beam_walk.hpp"
 #include "support/lazor_levels.hpp"
 #include "support/portable_random.hpp"
-#include "support/skip_test.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -140,11 +139,8 @@ TEST_CASE("only the block a branch enters acts, as the rule's table says", "[puz
 
 TEST_CASE("walk, engine and plain rules agree on random placements of the public levels",
           "[puzzle][scene]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     std::mt19937_64 rng(13);
     int compared = 0;
     for (const auto& file : bff_files(*folder)) {

@@ -7,7 +7,6 @@
 #include "orthoray/solve.hpp"
 #include "support/lazor_levels.hpp"
 #include "support/run_cli.hpp"
-#include "support/skip_test.hpp"
 #include "support/test_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -51,11 +50,8 @@ long brute_force_count(const LazorLevel& level) {
 } // namespace
 
 TEST_CASE("every public level is solved, and each solution checks twice", "[puzzle][solve]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     int solved = 0;
     for (const auto& file : bff_files(*folder)) {
         INFO(file.string());
@@ -72,11 +68,8 @@ TEST_CASE("every public level is solved, and each solution checks twice", "[puzz
 }
 
 TEST_CASE("the unsolvable public levels are proven unsolvable", "[puzzle][solve]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     const auto files = bff_files(*folder / "unsolvable");
     CHECK(files.size() == 3);
     for (const auto& file : files) {
@@ -95,11 +88,8 @@ TEST_CASE("the unsolvable public levels are proven unsolvable", "[puzzle][solve]
 }
 
 TEST_CASE("solution counts (--all) agree with brute force on small levels", "[puzzle][solve]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     // Levels with few placements, among them every kind of block, several
     // solutions (Kaelosonaa-dark_2: all 495; rbu1996-easy: 4 of 276), and
     // lasers that start beside blocks (numbered_4, tiny_5).
@@ -121,11 +111,8 @@ TEST_CASE("solution counts (--all) agree with brute force on small levels", "[pu
 }
 
 TEST_CASE("the answer is the same for any number of threads", "[puzzle][solve]") {
-    const auto folder = lazor_folder();
-    if (!folder) {
-        skip_test("no ../shared/puzzles/lazor beside the source tree");
-        return;
-    }
+    const auto folder = lazor_folder_or_skip();
+    if (!folder) return;
     const auto files = bff_files(*folder);
     for (std::size_t i = 0; i < files.size(); i += 5) {
         INFO(files[i].string());

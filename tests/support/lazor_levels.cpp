@@ -1,6 +1,7 @@
 #include "support/lazor_levels.hpp"
 
 #include "support/run_cli.hpp"
+#include "support/skip_test.hpp"
 
 #include <algorithm>
 #include <set>
@@ -14,6 +15,12 @@ std::optional<fs::path> lazor_folder() {
     const fs::path folder = fs::path(source_path("..")) / "shared" / "puzzles" / "lazor";
     if (fs::is_directory(folder)) return folder;
     return std::nullopt;
+}
+
+std::optional<fs::path> lazor_folder_or_skip() {
+    std::optional<fs::path> folder = lazor_folder();
+    if (!folder) skip_test("no ../shared/puzzles/lazor beside the source tree");
+    return folder;
 }
 
 std::vector<fs::path> bff_files(const fs::path& folder) {

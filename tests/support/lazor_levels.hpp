@@ -14,9 +14,11 @@
 
 namespace orthoray::test {
 
-// The folder of the public levels, or nothing when it is not there (the
-// tests that need it then call skip_test() and return).
+// The folder of the public levels, or nothing when it is not there.
 std::optional<std::filesystem::path> lazor_folder();
+// The same for a test that needs the folder: when it is not there, the test
+// is reported skipped (support/skip_test.hpp) and must return.
+std::optional<std::filesystem::path> lazor_folder_or_skip();
 
 // The .bff files directly in `folder`, sorted.
 std::vector<std::filesystem::path> bff_files(const std::filesystem::path& folder);
