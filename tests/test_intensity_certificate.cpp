@@ -144,13 +144,9 @@ TEST_CASE("an intensity certificate lists expanded states, lit witnesses and the
     CHECK(v.message == "valid: unlit above intensity 10, 1 reflections, 3 states");
     // Target 1 claimed with 222, by a true witness (back from x = 4): a lit
     // target's intensity is the greatest that reaches it, here 333.
-    std::string dimmer = c.text;
-    const std::string lit_1 = "lit 1 reflections 0 ray 1 intensity 333\nstep 0 0 1 0\n"
-                              "step 2 0 1 0\n";
-    REQUIRE(dimmer.find(lit_1) != std::string::npos);
-    dimmer.replace(dimmer.find(lit_1), lit_1.size(),
-                   "lit 1 reflections 1 ray 1 intensity 222\nstep 0 0 1 0\nstep 2 0 1 0\n"
-                   "step 4 0 -1 0\n");
+    const std::string dimmer = test::replaced(
+        c.text, "lit 1 reflections 0 ray 1 intensity 333\nstep 0 0 1 0\nstep 2 0 1 0\n",
+        "lit 1 reflections 1 ray 1 intensity 222\nstep 0 0 1 0\nstep 2 0 1 0\nstep 4 0 -1 0\n");
     const Verdict forged = check(scene, dimmer);
     CHECK_FALSE(forged.valid);
     CHECK(forged.message.find("invalid: target 1 (line 8) is claimed lit with intensity 222, "

@@ -5,6 +5,7 @@
 // the message must name. The writer is not used here: these literals are
 // the verifier's own specification.
 #include "support/case_count.hpp"
+#include "support/certificate_lines.hpp"
 #include "support/certificate_outcome.hpp"
 #include "support/portable_random.hpp"
 
@@ -27,17 +28,11 @@ namespace test = orthoray::test;
 using orthoray::test::expect_invalid;
 using orthoray::test::expect_valid;
 using orthoray::test::Outcome;
+using orthoray::test::replaced;
 using orthoray::test::verify;
 
 Scene scene_of(const std::string& text) {
     return orthoray::read_scene(text, "<scene>");
-}
-
-// Replaces the first occurrence of `from` (which must be there).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const std::size_t at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    return text.replace(at, from.size(), to);
 }
 
 // Malformed: one located message, exactly `message`.

@@ -75,4 +75,12 @@ inline std::size_t line_with(const Lines& lines, const std::string& word) {
     return all[0];
 }
 
+// `text` with the first occurrence of `from` (which must be there) replaced
+// by `to`: a tampering written as the change it makes.
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+}
+
 } // namespace orthoray::test
