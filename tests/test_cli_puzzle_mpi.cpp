@@ -57,11 +57,9 @@ TEST_CASE("puzzle solve --mpi on two ranks prints what one process prints",
                                                           {"reflect-8x8-hard", " --all"},
                                                           {"several-5x5", " --all --json"}})
         runs.emplace_back(source_path(std::string("instances/puzzles/") + name + ".bff"), options);
-    if (const auto folder = lazor_folder()) {
+    if (const auto folder = lazor_folder_or_warn()) {
         runs.emplace_back((*folder / "braid_5.bff").string(), " --all");
         runs.emplace_back((*folder / "dark_1.bff").string(), " --json");
-    } else {
-        WARN("../shared/puzzles/lazor is absent beside the source tree: its levels skipped");
     }
     const TempDir dir;
     for (const auto& [level, options] : runs) {

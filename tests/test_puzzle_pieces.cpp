@@ -27,7 +27,7 @@ constexpr std::uint64_t whole_search_nodes = case_count(60'000);
 // ../shared/puzzles/lazor.
 std::vector<std::pair<std::string, LazorLevel>> public_levels() {
     std::vector<std::filesystem::path> files = bff_files(source_path("instances/puzzles"));
-    if (const auto folder = lazor_folder()) {
+    if (const auto folder = lazor_folder_or_warn()) {
         const std::vector<std::filesystem::path> more = bff_files(*folder);
         files.insert(files.end(), more.begin(), more.end());
     }

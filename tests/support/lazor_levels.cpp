@@ -23,6 +23,13 @@ std::optional<fs::path> lazor_folder_or_skip() {
     return folder;
 }
 
+std::optional<fs::path> lazor_folder_or_warn() {
+    std::optional<fs::path> folder = lazor_folder();
+    if (!folder)
+        WARN("../shared/puzzles/lazor is absent beside the source tree: its levels left out");
+    return folder;
+}
+
 std::vector<fs::path> bff_files(const fs::path& folder) {
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(folder))

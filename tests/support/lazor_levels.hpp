@@ -19,6 +19,10 @@ std::optional<std::filesystem::path> lazor_folder();
 // The same for a test that needs the folder: when it is not there, the test
 // is reported skipped (support/skip_test.hpp) and must return.
 std::optional<std::filesystem::path> lazor_folder_or_skip();
+// The same for a test that also runs without the folder, on fewer levels:
+// when it is not there, the test's output says that its levels were left
+// out, so that a run on fewer cases is never silent.
+std::optional<std::filesystem::path> lazor_folder_or_warn();
 
 // The .bff files directly in `folder`, sorted.
 std::vector<std::filesystem::path> bff_files(const std::filesystem::path& folder);
