@@ -3,6 +3,7 @@
 #include "option_checks.hpp"
 #include "orthoray/generate.hpp"
 #include "output_file.hpp"
+#include "stop_at_once.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -201,6 +202,9 @@ GeneratedScene checked_build(const GenerateArgs& args, const CLI::App& cmd) {
 int run(const GenerateArgs& args, const CLI::App& cmd) {
     const std::string header = checked_header(args, cmd);
     const std::string text = write_generated(checked_build(args, cmd), {header});
+    // Decided: until here a signal stopped the command at once (main.cpp),
+    // with nothing written; from here on it would cut the scene short.
+    stop_no_more();
     if (cmd.get_option("--output")->count() == 0) {
         std::cout << text;
         return yes;

@@ -3,6 +3,7 @@
 #include "orthoray/allocator_policy.hpp"
 #include "orthoray/parse.hpp"
 #include "output_file.hpp"
+#include "stop_at_once.hpp"
 
 #include <algorithm>
 #include <csignal>
@@ -48,6 +49,13 @@ std::string help_command(int argc, char** argv, const CLI::App& app) {
 
 int main(int argc, char** argv) {
     using namespace orthoray::cli;
+    // From the first line on, SIGINT and SIGTERM stop any command at once
+    // (exit 3, nothing written: stop_at_once.hpp), not by the default
+    // action, which would exit 130 or 143 and leave a temporary output
+    // behind. Commands that report how far they got set their own handling
+    // over this one (InterruptGuard), and once a result is decided the
+    // signals are held back (stop_no_more), so no stop cuts it short.
+    stop_at_once(std::nullopt);
     orthoray::keep_freed_memory();
     mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
     // A closed pipe or a file size limit must be a failed write, reported,
@@ -74,6 +82,7 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) { // --help, --version: a failed write is still one
+            stop_no_more();
             const int status = app.exit(e);
             try {
                 finish_standard_output();
@@ -91,6 +100,7 @@ int main(int argc, char** argv) {
         int status = internal_error;
         for (const Subcommand& sub : subcommands)
             if (sub.app->parsed()) status = sub.run();
+        stop_no_more(); // decided: what is left is flushing it
         finish_standard_output();
         return status;
     } catch (const WriteError& e) {
