@@ -4,6 +4,7 @@
 #include "lattice/lattice_int.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
@@ -68,6 +69,9 @@ public:
     }
     Link tail() const { return tail_; }
     Link prev(Link p) const { return prev_[p]; }
+    // The `prev` links as one array, for a walk that keeps its pointer in a
+    // register (the array never moves).
+    const Link* prevs() const { return prev_.data(); }
     Link next(Link p) const { return next_[p]; }
     // A hint that p's `prev` link is about to be rewritten.
     void prefetch_prev(Link p) const { __builtin_prefetch(&prev_[p], 1); }
@@ -164,7 +168,13 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
 
     InducedOrbit orbit;
     Int total, rounds;
-    std::vector<Link> walked;
+    // The pieces a walk passes, at most all k: allocated once (and touched
+    // only as far as walks reach), so that the walk has no call in it (a
+    // push_back's growth) around which its pointers and running total would
+    // be spilled to the stack and reloaded.
+    const auto walked_buffer = std::make_unique_for_overwrite<Link[]>(k);
+    Link* const walked = walked_buffer.get();
+    std::size_t walked_count = 0;
     // On machine integers 4096 steps take about a millisecond; a step on GMP
     // integers of a million digits takes milliseconds by itself, so there
     // every step asks (a clock read, small beside one big division).
@@ -197,8 +207,7 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         const bool top = order > 0;
         const Link w = top ? d : r;
         const Order& losers = top ? image : domain;
-        walked.clear();
-        total = 0;
+        walked_count = 0;
         Link p = top ? r : d;
         // The walk is a chain of dependent misses; the loads it does not
         // depend on are issued along it. Each consumed piece's return time
@@ -211,6 +220,8 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         // runs off its order: both orders hold the same pieces, w is last in
         // the other one, and this walk passes at most all of them but w.
         const Order& winners = top ? domain : image;
+        const Link* const loser_prev = losers.prevs();
+        const Link* const winner_prev = winners.prevs();
         // If the walk ends in single steps, the consumed block is spliced in
         // right after w, rewriting w's `next` link in the losers' order and
         // the `prev` link of the piece that follows w there: two dependent
@@ -218,19 +229,24 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         // Read the first and fetch the second now, beside the walk's chain.
         if (const Link after = losers.next(w); after != none) losers.prefetch_prev(after);
         Link ahead = w;
-        while (p != w && total < length[w]) {
-            walked.push_back(p);
-            __builtin_prefetch(&piece.ret[p], 1);
-            total += length[p];
-            p = losers.prev(p);
-            ahead = winners.prev(ahead);
-            __builtin_prefetch(&length[ahead]);
+        const Int* const lengths = length.data();
+        const Int& bound = lengths[w];
+        const auto* const returns = piece.ret.data();
+        total = 0;
+        while (p != w && total < bound) {
+            walked[walked_count++] = p;
+            __builtin_prefetch(&returns[p], 1);
+            total += lengths[p];
+            p = loser_prev[p];
+            ahead = winner_prev[ahead];
+            __builtin_prefetch(&lengths[ahead]);
         }
         if (p == w && total < length[w]) {
             // Whole rounds through every loser: floor((l_w - 1) / S) of them
             // leave l_w positive, and the orders are as before.
             rounds = (length[w] - 1) / total;
-            for (Link q : walked) {
+            for (std::size_t i = 0; i < walked_count; ++i) {
+                const Link q = walked[i];
                 if (top)
                     then_repeated(piece, q, w, rounds);
                 else
@@ -249,7 +265,7 @@ std::optional<InducedOrbit> induce_on(const std::vector<Piece>& pieces, Inductio
         // l_w (all walked pieces but the last); the last one is compared again.
         // One by one, each goes from the end of its order to right after w,
         // so together they move as one block in their own order.
-        const std::size_t consumed = walked.size() - 1;
+        const std::size_t consumed = walked_count - 1;
         for (std::size_t i = 0; i < consumed; ++i) {
             const Link q = walked[i];
             if (top) {
