@@ -1,10 +1,11 @@
 // For the commands that write their output only at the end (render, bounds,
 // convert, generate), and for every command until it sets up its own
-// handling (main() installs this first thing): SIGINT, SIGTERM and --timeout end the process at
-// once, from the signal handler, with one line on stderr and exit status 3. Nothing is lost: there
-// was nothing to report yet, and an output being written is a temporary file that the handler
-// removes (OutputFile), so the target is untouched. `solve` instead polls (run_monitor.hpp), since
-// a stopped solve still reports how far it got.
+// handling (main() installs this first thing): SIGINT, SIGTERM and
+// --timeout end the process at once, from the signal handler, with one line
+// on stderr and exit status 3. Nothing is lost: there was nothing to report
+// yet, and an output being written is a temporary file that the handler
+// removes (OutputFile), so the target is untouched. `solve` instead polls
+// (run_monitor.hpp), since a stopped solve still reports how far it got.
 #pragma once
 
 #include <CLI/CLI.hpp>
