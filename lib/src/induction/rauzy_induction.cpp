@@ -70,7 +70,10 @@ public:
     Link tail() const { return tail_; }
     Link prev(Link p) const { return prev_[p]; }
     // The `prev` links as one array, for a walk that keeps its pointer in a
-    // register (the array never moves).
+    // register (the array never moves). The walk must take it itself: it
+    // stores the pieces it passes, Links like these, so the compiler cannot
+    // tell that the vector's own pointer is unchanged and reloads it (and
+    // l_w) on every piece, as it did with prev() in the loop.
     const Link* prevs() const { return prev_.data(); }
     Link next(Link p) const { return next_[p]; }
     // A hint that p's `prev` link is about to be rewritten.
