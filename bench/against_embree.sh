@@ -27,9 +27,15 @@ mkdir -p "$out"
 pin=()
 if [[ $cpu != none ]] && command -v taskset >/dev/null; then pin=(taskset -c "$cpu"); fi
 
+# The commit the programs were built from (orthoray version), which is what
+# ran, whatever the checkout holds now.
+build_commit() {
+    "$build/orthoray" version --json | sed -n 's/.*"commit":"\([^"]*\)".*/\1/p'
+}
+
 machine() {
     echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //');" \
-        "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown); $(date -u '+%F %R UTC');" \
+        "built from commit $(build_commit); $(date -u '+%F %R UTC');" \
         "load average $(cut -d' ' -f1-3 /proc/loadavg);" \
         "${pin[*]:-not pinned}."
 }

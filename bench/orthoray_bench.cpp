@@ -13,6 +13,7 @@
 #include "parse_options.hpp"
 
 #include "orthoray/allocator_policy.hpp"
+#include "orthoray/build_info.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -133,10 +134,11 @@ void print_machine() {
             break;
         }
     long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    std::printf("Machine: %ld cores online, %s, %.1f GB memory; load average %s; %s.\n\n",
+    std::printf("Machine: %ld cores online, %s, %.1f GB memory; load average %s; %s.\n"
+                "Built from commit %s.\n\n",
                 sysconf(_SC_NPROCESSORS_ONLN), model.empty() ? "unknown CPU" : model.c_str(),
                 static_cast<double>(pages) * static_cast<double>(page) / 1e9,
-                load_average().c_str(), cores_allowed().c_str());
+                load_average().c_str(), cores_allowed().c_str(), build_info().commit.c_str());
 }
 
 } // namespace

@@ -177,6 +177,7 @@ void bind_tools(py::module_& m) {
         const BuildInfo info = build_info();
         py::dict d;
         d["orthoray"] = info.orthoray;
+        d["commit"] = info.commit;
         d["gmp"] = info.gmp;
         d["boost"] = info.boost;
         d["compiler"] = info.compiler;

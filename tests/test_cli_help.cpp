@@ -109,6 +109,10 @@ TEST_CASE("orthoray version --json names the libraries it was built with", "[cli
                             std::to_string(BOOST_VERSION / 100 % 1000) + "." +
                             std::to_string(BOOST_VERSION % 100));
     CHECK(v["compiler"].get<std::string>().size() > 4);
+    // A git checkout's commit, 12 hex digits and "-dirty" when it had
+    // changes, or "unknown" (cmake/write_commit.cmake; tested there).
+    const std::string commit = v["commit"].get<std::string>();
+    CHECK(std::regex_match(commit, std::regex("[0-9a-f]{12}(-dirty)?|unknown")));
 }
 
 TEST_CASE("every subcommand has a man page that lists every option its --help shows",

@@ -196,7 +196,7 @@ def test_diagonals_from_python():
 def test_version_and_build_info():
     info = orthoray.build_info()
     assert info["orthoray"] == orthoray.__version__
-    assert set(info) >= {"gmp", "boost", "compiler"}
+    assert set(info) >= {"gmp", "boost", "compiler", "commit"}
 
 
 def test_ints_beyond_python_decimal_conversion_limit():

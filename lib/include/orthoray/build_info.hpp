@@ -9,6 +9,9 @@ namespace orthoray {
 
 struct BuildInfo {
     std::string orthoray; // "MAJOR.MINOR.PATCH"
+    // The git commit built ("a78e605c1d2e", "-dirty" appended when tracked
+    // files had changes), or "unknown" when not built from a git checkout.
+    std::string commit;
     std::string gmp;      // the GMP linked at run time (gmp_version)
     std::string boost;    // the Boost headers compiled against ("1.74")
     std::string compiler; // "GCC 12.2.0", "Clang 14.0.6"

@@ -1,5 +1,6 @@
 #include "orthoray/build_info.hpp"
 
+#include "about/build_commit.hpp"
 #include "orthoray/version.hpp"
 
 #include <boost/version.hpp>
@@ -10,6 +11,7 @@ namespace orthoray {
 BuildInfo build_info() {
     BuildInfo info;
     info.orthoray = version;
+    info.commit = ORTHORAY_COMMIT;
     // The run-time library's own string: a program may run against a newer
     // GMP than the one it was compiled with.
     info.gmp = gmp_version;
