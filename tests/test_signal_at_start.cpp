@@ -14,7 +14,6 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <string>
-#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
@@ -65,12 +64,7 @@ TEST_CASE("a signal while decided help text waits in a full pipe lets it finish 
     REQUIRE(fcntl(reader, F_SETPIPE_SZ, 4096) == 4096);
     const pid_t child = spawn_cli({"generate", "--help"}, fifo, dir.path("err"));
     REQUIRE(wait_until_catching(child, SIGTERM));
-    int queued = 0;
-    for (int i = 0; i < 30000 && queued < 4096; ++i) {
-        REQUIRE(ioctl(reader, FIONREAD, &queued) == 0);
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    REQUIRE(queued == 4096);
+    REQUIRE(wait_until_queued(child, reader, 4096));
     REQUIRE(kill(child, SIGTERM) == 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(50)); // let it land, if it would
     // From here reads wait for the child: they end when it closes its end,

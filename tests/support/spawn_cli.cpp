@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -102,6 +103,13 @@ bool wait_until_open(pid_t child, const std::string& path) {
             if (fs::read_symlink(fd.path(), link_error) == target) return true;
         }
         return false;
+    });
+}
+
+bool wait_until_queued(pid_t child, int reader, int bytes) {
+    return poll_child(child, [&] {
+        int queued = 0;
+        return ::ioctl(reader, FIONREAD, &queued) == 0 && queued >= bytes;
     });
 }
 

@@ -24,11 +24,13 @@ std::optional<int> wait_at_most(pid_t child, double seconds);
 // signal: it would die of it (exit 143 or 130), whatever the code does.
 // These poll /proc until `child` has a handler for `signal` (SigCgt in
 // /proc/PID/status), or until it holds `path` open (a link in
-// /proc/PID/fd): then it waits where the test means it to. A minute is a
-// guard that turns a hang into a failure, not a measurement; false past it
-// or when the child has ended.
+// /proc/PID/fd), or until the pipe read through `reader` holds `bytes`
+// bytes (FIONREAD): then it waits where the test means it to. A minute is
+// a guard that turns a hang into a failure, not a measurement; false past
+// it or when the child has ended.
 bool wait_until_catching(pid_t child, int signal);
 bool wait_until_open(pid_t child, const std::string& path);
+bool wait_until_queued(pid_t child, int reader, int bytes);
 
 struct ShellResult {
     int status = -1;
