@@ -30,6 +30,22 @@ std::string scene_text(const std::string& grid) {
 
 } // namespace
 
+TEST_CASE("a grid file may start with a UTF-8 byte order mark", "[grid][reader]") {
+    const std::string plain = "beam left 0\ntarget 0 1\ngrid\n./\n";
+    const GridMaze marked = read_grid_maze("\xEF\xBB\xBF" + plain, "m.grid");
+    const GridMaze expected = read_grid_maze(plain, "m.grid");
+    CHECK(marked.cells == expected.cells);
+    CHECK(marked.width == 2);
+    CHECK(marked.first_row_line == 4);
+    REQUIRE(marked.beams.size() == 1);
+    CHECK(marked.beams[0].side == GridSide::left);
+    // The mark counts as three columns of line 1.
+    CHECK_THROWS_WITH(read_grid_maze("\xEF\xBB\xBF"
+                                     "beam nowhere 0\n",
+                                     "m.grid"),
+                      Catch::Contains("m.grid:1:9:"));
+}
+
 TEST_CASE("a grid reads cell by cell, its statements in order", "[grid][reader]") {
     const GridMaze maze = read_grid_maze("# a comment\n"
                                          "beam left 1   # enters row 1\n"

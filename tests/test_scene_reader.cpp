@@ -148,6 +148,17 @@ TEST_CASE("zero elements are allowed, in any order after dim", "[reader]") {
     CHECK(b.elements[0].line == 4);
 }
 
+TEST_CASE("a UTF-8 byte order mark before the first line is layout only", "[reader]") {
+    const std::string plain = "dim 2\nmirror x 3 y 0 5\nray 0 0 1 0\ntarget 7/2 1\n";
+    const Scene s = read_scene("\xEF\xBB\xBF" + plain);
+    require_same_scene(s, read_scene(plain), false);
+    CHECK(s.elements[0].line == 2);
+    // Also before a first line that is a comment, or the whole file.
+    require_same_scene(read_scene("\xEF\xBB\xBF# made on Windows\r\n" + plain), s, false);
+    CHECK_THROWS_WITH(read_scene("\xEF\xBB\xBF", "f.scene"),
+                      Catch::Contains("f.scene:1:4: found end of file"));
+}
+
 TEST_CASE("comments, blank lines, CRLF and tabs are layout only", "[reader]") {
     const std::string plain = "dim 2\n"
                               "mirror x 3 y 0 5\n"

@@ -233,10 +233,12 @@ std::vector<Malformed> malformed_cases() {
         {"form feed", "dim 2\n\f\n", 2, 1, "found byte 0x0C, expected printable ASCII text"},
         {"UTF-8 outside a comment", "dim 2\nray 0 0 1 1 \xC3\xA9\n", 2, 13,
          "found byte 0xC3, expected printable ASCII text"},
-        {"UTF-8 byte order mark",
+        {"UTF-8 byte order mark past the first line's start", "dim 2\n\xEF\xBB\xBFray 0 0 1 1\n", 2,
+         1, "found byte 0xEF, expected printable ASCII text"},
+        {"UTF-8 byte order mark, then a bad byte: columns count the mark's bytes",
          "\xEF\xBB\xBF"
-         "dim 2\n",
-         1, 1, "found byte 0xEF, expected printable ASCII text"},
+         "dim 2 \x01\n",
+         1, 10, "found byte 0x01, expected printable ASCII text"},
         {"binary header",
          "\x7F"
          "ELF\x02\x01\x01",

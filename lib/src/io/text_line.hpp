@@ -33,15 +33,24 @@ struct TextEnd {
 
 // Calls read(line, number) for every line of `text`, numbered from 1, each
 // without its '\n' and without a CR before it (CRLF files, or a last line
-// ending in CR). Exceptions from `read` pass through.
+// ending in CR). A UTF-8 byte order mark before the first line, which some
+// editors write, reads as three blanks, so that columns stay byte columns
+// of the file. Exceptions from `read` pass through.
 template <class Read>
 TextEnd for_each_line(std::string_view text, Read&& read) {
+    constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+    std::string unmarked; // line 1 with the mark blanked, when it has one
     std::size_t begin = 0;
     for (int number = 1;; ++number) {
         const std::size_t end = text.find('\n', begin);
         std::string_view line = text.substr(
             begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        if (number == 1 && line.starts_with(byte_order_mark)) {
+            unmarked = "   ";
+            unmarked += line.substr(byte_order_mark.size());
+            line = unmarked;
+        }
         read(line, number);
         if (end == std::string_view::npos) return {number, static_cast<int>(line.size()) + 1};
         begin = end + 1;

@@ -91,7 +91,6 @@ private:
     std::vector<Token> tokens_;
     std::size_t next_ = 0;
     int line_ = 0, end_column_ = 0;
-    std::string unmarked_first_line_; // line 1 without its byte order mark
 
     [[noreturn]] void fail(int column, const std::string& message) const {
         throw InputError(file_, line_, column, message);
@@ -102,13 +101,6 @@ private:
 
     void read_line(std::string_view line, int line_number) {
         line_ = line_number;
-        // A UTF-8 byte order mark, which some editors put before the first
-        // line, reads as three blanks, so that columns stay byte columns.
-        if (line_number == 1 && line.starts_with("\xEF\xBB\xBF")) {
-            unmarked_first_line_ = "   ";
-            unmarked_first_line_ += line.substr(3);
-            line = unmarked_first_line_;
-        }
         const std::size_t comment = line.find('#');
         if (const std::optional<io::BadByte> bad = io::find_bad_byte(line, comment))
             fail(bad->column, bad->message);
