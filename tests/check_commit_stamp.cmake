@@ -25,6 +25,7 @@ endfunction()
 
 function(git)
     execute_process(COMMAND ${GIT_EXECUTABLE} -c user.name=test -c user.email=test@example.org
+                            -c commit.gpgsign=false
                             -c init.defaultBranch=main ${ARGN}
                     WORKING_DIRECTORY ${WORK_DIR}/repo RESULT_VARIABLE failed
                     OUTPUT_VARIABLE out ERROR_VARIABLE out)
