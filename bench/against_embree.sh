@@ -28,9 +28,10 @@ pin=()
 if [[ $cpu != none ]] && command -v taskset >/dev/null; then pin=(taskset -c "$cpu"); fi
 
 # The commit the programs were built from (orthoray version), which is what
-# ran, whatever the checkout holds now.
+# ran, whatever the checkout holds now; unknown without the built program.
 build_commit() {
-    "$build/orthoray" version --json | sed -n 's/.*"commit":"\([^"]*\)".*/\1/p'
+    "$build/orthoray" version --json 2>/dev/null | sed -n 's/.*"commit":"\([^"]*\)".*/\1/p' ||
+        echo unknown
 }
 
 machine() {
