@@ -5,24 +5,31 @@
 # configure time, so that a rebuild after a commit names the new one; the
 # file is rewritten only when the text changes, so an unchanged commit
 # recompiles nothing.
+#
+# git refuses a repository owned by another user ("dubious ownership"), as
+# when root builds a user's checkout in a container. Every call here names
+# SOURCE_DIR itself as a safe directory: the build already runs this tree's
+# own CMake code, so trusting its git configuration adds no risk, and only
+# that one path is named, so a tree inside some other user's repository
+# still reads as unknown.
 set(commit unknown)
 find_package(Git QUIET)
 if(GIT_FOUND)
-    execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} rev-parse --show-toplevel
+    file(REAL_PATH "${SOURCE_DIR}" source)
+    set(git ${GIT_EXECUTABLE} -c safe.directory=${source} -C ${source})
+    execute_process(COMMAND ${git} rev-parse --show-toplevel
                     OUTPUT_VARIABLE top RESULT_VARIABLE failed
                     OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-    file(REAL_PATH "${SOURCE_DIR}" source)
     if(NOT failed AND NOT top STREQUAL "")
         file(REAL_PATH "${top}" top)
     endif()
     if(NOT failed AND top STREQUAL source)
-        execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} rev-parse --short=12 HEAD
+        execute_process(COMMAND ${git} rev-parse --short=12 HEAD
                         OUTPUT_VARIABLE head RESULT_VARIABLE failed
                         OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
         if(NOT failed)
             set(commit ${head})
-            execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} status --porcelain
-                                    --untracked-files=no
+            execute_process(COMMAND ${git} status --porcelain --untracked-files=no
                             OUTPUT_VARIABLE changes RESULT_VARIABLE failed ERROR_QUIET)
             if(NOT failed AND NOT changes STREQUAL "")
                 string(APPEND commit -dirty)

@@ -1,8 +1,10 @@
-# cmake/write_commit.cmake against three trees: a fresh repository at a known
+# cmake/write_commit.cmake against four trees: a fresh repository at a known
 # commit (the 12-digit commit), the same with a tracked file changed
-# ("-dirty"; an untracked file alone does not count), and a directory inside
+# ("-dirty"; an untracked file alone does not count), a directory inside
 # some other repository, this build's own tree ("unknown": its commit would
-# name other code). Run as cmake -DSCRIPT=... -DWORK_DIR=... -P this file.
+# name other code), and, when run as root, the repository owned by another
+# user, which git itself refuses ("dubious ownership") unless told the
+# directory is safe. Run as cmake -DSCRIPT=... -DWORK_DIR=... -P this file.
 find_package(Git QUIET)
 if(NOT GIT_FOUND)
     message("SKIPPED: no git on this machine")
@@ -60,4 +62,33 @@ stamp(${WORK_DIR}/repo/inner commit)
 if(NOT commit STREQUAL "unknown")
     message(FATAL_ERROR "a directory inside another repository: got '${commit}'")
 endif()
-message("write_commit.cmake: ${head}, ${head}-dirty and unknown, as expected")
+
+# Root building another user's checkout, as in a container with the sources
+# mounted: the commit all the same. Skipped for other users, who cannot give
+# a directory away.
+execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+if(NOT uid STREQUAL "0")
+    message("write_commit.cmake: ${head}, ${head}-dirty and unknown, as expected; "
+            "SKIPPED the checkout owned by another user (not running as root)")
+    return()
+endif()
+execute_process(COMMAND chown -R 65534:65534 ${WORK_DIR}/repo RESULT_VARIABLE failed
+                ERROR_QUIET)
+if(failed)
+    message("write_commit.cmake: ${head}, ${head}-dirty and unknown, as expected; "
+            "SKIPPED the checkout owned by another user (this file system refused chown)")
+    return()
+endif()
+execute_process(COMMAND ${GIT_EXECUTABLE} -C ${WORK_DIR}/repo rev-parse HEAD
+                RESULT_VARIABLE refused OUTPUT_QUIET ERROR_QUIET)
+stamp(${WORK_DIR}/repo commit)
+execute_process(COMMAND chown -R 0:0 ${WORK_DIR}/repo)
+if(NOT refused)
+    message(FATAL_ERROR "git read a checkout owned by another user without being told it is "
+                        "safe: this case tests nothing here")
+endif()
+if(NOT commit STREQUAL "${head}-dirty")
+    message(FATAL_ERROR "checkout owned by another user: got '${commit}', expected '${head}-dirty'")
+endif()
+message("write_commit.cmake: ${head}, ${head}-dirty and unknown, as expected, "
+        "also for a checkout owned by another user")
